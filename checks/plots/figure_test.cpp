@@ -1,0 +1,25 @@
+#include "plots/figure.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace fs = std::filesystem;
+using affinterp::plots::Figure;
+
+TEST(Figure, RendersPngAndSvgFromDatablocks) {
+  const fs::path stem = fs::temp_directory_path() / "affinterp_figure_test";
+  const auto files = Figure(stem)
+                         .size(300, 200)
+                         .data("line", {{0, 0}, {1, 1}, {}, {0, 1}, {1, 0}})
+                         .script("plot $line using 1:2 with lines")
+                         .render();
+  ASSERT_EQ(files.size(), 2u);
+  EXPECT_GT(fs::file_size(stem.string() + ".png"), 0u);
+  EXPECT_GT(fs::file_size(stem.string() + ".svg"), 0u);
+}
+
+TEST(Figure, ReportsGnuplotErrors) {
+  const fs::path stem = fs::temp_directory_path() / "affinterp_figure_bad";
+  EXPECT_THROW(Figure(stem).script("plot $missing using 1:2").render(), std::runtime_error);
+}

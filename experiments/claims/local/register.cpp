@@ -1,0 +1,7 @@
+#include "experiments/claims/registry.hpp"
+
+namespace affinterp::claims {
+
+void register_local_checks(CheckRegistry& /*registry*/) {}
+
+}  // namespace affinterp::claims

@@ -1,0 +1,48 @@
+#include "experiments/claims/runner.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <iomanip>
+#include <ostream>
+#include <stdexcept>
+
+namespace affinterp::claims {
+
+std::vector<ClaimResult> run_claims(const CheckRegistry& registry, const RunContext& context,
+                                    const std::vector<std::string>& ids, std::ostream& progress) {
+  for (const auto& id : ids)
+    if (find_claim(id) == nullptr) throw std::invalid_argument("unknown claim ID '" + id + "' (see --list)");
+
+  std::vector<const ClaimInfo*> selected;
+  for (const auto& info : catalogue())
+    if (ids.empty() || std::find(ids.begin(), ids.end(), info.id) != ids.end()) selected.push_back(&info);
+
+  std::vector<ClaimResult> results;
+  std::size_t index = 0;
+  for (const ClaimInfo* info : selected) {
+    ++index;
+    ClaimResult result{info, {}, 0, {}};
+    progress << "[" << std::setw(2) << index << "/" << selected.size() << "] " << info->id << " ... "
+             << std::flush;
+    if (const Check* check = registry.find(info->id)) {
+      const auto start = std::chrono::steady_clock::now();
+      try {
+        result.outcome = (*check)(context);
+      } catch (const std::exception& e) {
+        result.error = e.what();
+      }
+      result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    } else {
+      result.outcome.summary = "no check implemented yet";
+    }
+    if (result.error.empty())
+      progress << to_string(result.outcome.verdict) << " (" << std::fixed << std::setprecision(2)
+               << result.seconds << " s)\n";
+    else
+      progress << "FAILED TO RUN: " << result.error << "\n";
+    results.push_back(std::move(result));
+  }
+  return results;
+}
+
+}  // namespace affinterp::claims

@@ -1,0 +1,21 @@
+#pragma once
+// The affinterp CLI: one file per command, each adding itself to the application.
+#include <CLI/CLI.hpp>
+
+#include <stdexcept>
+#include <string>
+
+namespace affinterp::cli {
+
+/// A command's failure: a one-line message for standard error and the exit status to return.
+struct CommandFailed : std::runtime_error {
+  CommandFailed(const std::string& message, int status) : std::runtime_error(message), status(status) {}
+  int status;
+};
+
+/// Exit status for bad command-line usage.
+inline constexpr int usage_error = 2;
+
+void add_claims_command(CLI::App& app);
+
+}  // namespace affinterp::cli

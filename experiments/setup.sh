@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Sets up affinterp on Debian: installs the Debian packages that are missing, then configures and builds
+# in Release into build/. Idempotent: a second run installs nothing and rebuilds only what changed.
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+
+packages=(
+  cmake g++ make ninja-build pkg-config
+  libeigen3-dev libboost-dev libboost-iostreams-dev libboost-filesystem-dev
+  libgtest-dev googletest librapidcheck-dev libbenchmark-dev
+  libgnuplot-iostream-dev gnuplot-nox fonts-dejavu-core imagemagick
+  nlohmann-json3-dev libcli11-dev libsuitesparse-dev
+  libcgal-dev libcgal-demo libxsimd-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo=sudo
+  echo "==> installing Debian packages: ${missing[*]}"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
+else
+  echo "==> Debian packages: all present"
+fi
+
+echo "==> configuring (Release) in $root/build"
+cmake -S "$root" -B "$root/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+echo "==> building"
+cmake --build "$root/build" -j "$(nproc)"

@@ -1,0 +1,133 @@
+#include "reports/generator/report.hpp"
+
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace affinterp::report {
+
+namespace {
+
+using nlohmann::json;
+
+/// Markdown table cells must not contain a bare '|' or a line break.
+std::string cell(std::string text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '|') out += "\\|";
+    else if (c == '\n') out += ' ';
+    else out += c;
+  }
+  return out;
+}
+
+std::string anchor(const std::string& id) {
+  std::string out;
+  for (const char c : id)
+    if (std::isalnum(static_cast<unsigned char>(c)) || c == '-') out += c;
+  return out;
+}
+
+std::string number(const json& value) {
+  if (value.is_null()) return "";
+  std::ostringstream out;
+  out << value.get<double>();
+  return out.str();
+}
+
+std::string one_line_evidence(const json& evidence) {
+  std::ostringstream out;
+  out << evidence.value("method", "");
+  if (evidence.value("sample_size", 0ull) > 0) out << "; n = " << evidence["sample_size"].get<unsigned long long>();
+  if (!evidence["seed"].is_null()) out << "; seed " << evidence["seed"].get<unsigned long long>();
+  if (!evidence["tolerance"].is_null()) out << "; tol " << number(evidence["tolerance"]);
+  if (!evidence["worst_deviation"].is_null()) out << "; worst " << number(evidence["worst_deviation"]);
+  return out.str();
+}
+
+std::string figure_link(const json& figures) {
+  for (const auto& f : figures) {
+    const std::string path = f.get<std::string>();
+    if (path.ends_with(".png")) return "[figure](" + path + ")";
+  }
+  return "";
+}
+
+void write_summary_table(std::ostringstream& md, const json& claims) {
+  md << "| ID | claim | verdict | evidence | figure |\n|---|---|---|---|---|\n";
+  for (const auto& c : claims) {
+    const std::string id = c["id"];
+    md << "| [`" << id << "`](#" << anchor(id) << ") | " << cell(c["statement"]) << " | **"
+       << c["verdict"].get<std::string>() << "** | " << cell(one_line_evidence(c["evidence"])) << " | "
+       << figure_link(c["figures"]) << " |\n";
+  }
+}
+
+void write_claim_section(std::ostringstream& md, const json& c) {
+  const std::string id = c["id"];
+  md << "<a id=\"" << anchor(id) << "\"></a>\n### `" << id << "`: " << c["verdict"].get<std::string>()
+     << "\n\n*" << c["where"].get<std::string>() << ".* " << c["statement"].get<std::string>() << "\n\n";
+  if (!c["summary"].get<std::string>().empty()) md << "**Finding.** " << c["summary"].get<std::string>() << "\n\n";
+  const json& e = c["evidence"];
+  md << "**Evidence.** " << one_line_evidence(e) << ".\n\n";
+  if (!e["details"].empty()) md << "```json\n" << e["details"].dump(2) << "\n```\n\n";
+  if (!e["measurements"].empty())
+    md << "Measurements (vary run to run):\n\n```json\n" << e["measurements"].dump(2) << "\n```\n\n";
+  if (!c["counterexample"].is_null())
+    md << "**Counterexample** (exact values as \"p/q\"):\n\n```json\n" << c["counterexample"].dump(2) << "\n```\n\n";
+  if (!c["correction"].is_null()) md << "**Correction.** " << c["correction"].get<std::string>() << "\n\n";
+  for (const auto& f : c["figures"]) {
+    const std::string path = f.get<std::string>();
+    if (path.ends_with(".png")) md << "![" << id << "](" << path << ")\n\n";
+  }
+}
+
+}  // namespace
+
+std::string render_markdown(const json& doc) {
+  const json& claims = doc["claims"];
+  std::map<std::string, int> counts;
+  for (const auto& c : claims) ++counts[c["verdict"].get<std::string>()];
+
+  std::ostringstream md;
+  md << "# affinterp report\n\n"
+     << "Which claims of Kaji et al., *Mathematical Analysis on Affine Maps for 2D Shape Interpolation* "
+        "(SCA 2012) and Matsushita, *A Study on 2D Shape Interpolation Using Affine Maps* (thesis, 2015) "
+        "hold, decided by computations this suite runs itself.\n\n"
+     << "Generated " << doc.value("generated_at", "") << " with seed " << doc.value("seed", 0ull) << ", size `"
+     << doc.value("size", "") << "`. Verdicts:";
+  for (const auto& [verdict, n] : counts) md << " " << verdict << " " << n << ";";
+  md << "\n\n## Claims\n\n";
+  write_summary_table(md, claims);
+
+  md << "\n## Verdicts\n\n"
+        "- **confirmed**: holds on everything tried (exact computation where the claim is algebraic, "
+        "otherwise a sweep whose size, seed and tolerance are stated).\n"
+        "- **refuted**: fails; the counterexample can be re-verified from claims.json alone.\n"
+        "- **corrected**: fails as printed, holds after the stated correction.\n"
+        "- **reproduced** / **not-reproduced**: a measured figure compared with the paper's.\n"
+        "- **inconclusive**: not decided; the finding says why.\n"
+        "- **pending**: no check implemented yet.\n";
+
+  std::string group;
+  for (const auto& c : claims) {
+    if (c.value("group", "") != group) {
+      group = c.value("group", "");
+      md << "\n## " << group << "\n\n";
+    }
+    write_claim_section(md, c);
+  }
+
+  md << "## How to reproduce\n\n"
+        "From a fresh clone on Debian, `bash experiments/reproduce.sh` installs what is missing, builds, "
+        "runs the benchmarks and writes this report and `claims.json`. One claim alone: "
+        "`build/bin/affinterp claims --only ID`; with another seed: `--seed N`.\n\n"
+        "## Environment\n\n| | |\n|---|---|\n";
+  for (const auto& [key, value] : doc["environment"].items())
+    md << "| " << key << " | " << cell(value.is_string() ? value.get<std::string>() : value.dump()) << " |\n";
+  md << "| seed | " << doc.value("seed", 0ull) << " |\n";
+  return md.str();
+}
+
+}  // namespace affinterp::report
