@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Usage: usage_test.sh path/to/affinterp
+set -u
+affinterp=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+
+# expect STATUS DESCRIPTION -- command...: the command exits with STATUS.
+expect() {
+  local want=$1 what=$2
+  shift 3
+  "$@" >"$work/out" 2>"$work/err"
+  local got=$?
+  if [ "$got" -ne "$want" ]; then
+    echo "FAIL: $what: exit $got, expected $want"; cat "$work/err"; failures=$((failures + 1))
+  fi
+}
+# one_line_error: the last command's standard error is exactly one line.
+one_line_error() {
+  if [ "$(wc -l <"$work/err")" -ne 1 ]; then
+    echo "FAIL: $1: error is not one line:"; cat "$work/err"; failures=$((failures + 1))
+  fi
+}
+
+expect 0 "--help" -- "$affinterp" --help
+expect 0 "claims --help" -- "$affinterp" claims --help
+expect 0 "report --help" -- "$affinterp" report --help
+expect 2 "no command" -- "$affinterp"
+one_line_error "no command"
+expect 2 "unknown option" -- "$affinterp" claims --bogus
+one_line_error "unknown option"
+expect 2 "bad size" -- "$affinterp" claims --size huge
+one_line_error "bad size"
+expect 2 "unknown claim" -- "$affinterp" claims --only no.such.claim --out "$work/r"
+one_line_error "unknown claim"
+[ ! -e "$work/r/claims.json" ] || { echo "FAIL: a failed run wrote claims.json"; failures=$((failures + 1)); }
+
+expect 0 "claims --list" -- "$affinterp" claims --list
+[ "$(wc -l <"$work/out")" -eq 41 ] || { echo "FAIL: --list does not list 41 claims"; failures=$((failures + 1)); }
+
+# A run, then a failed run: the first run's outputs stay as they were.
+expect 0 "quick run" -- "$affinterp" claims --size quick --no-figures --only kaji.linear.collapse --out "$work/r"
+cp "$work/r/claims.json" "$work/before.json"
+expect 2 "failed run" -- "$affinterp" claims --only no.such.claim --out "$work/r"
+cmp -s "$work/r/claims.json" "$work/before.json" || { echo "FAIL: a failed run changed claims.json"; failures=$((failures + 1)); }
+expect 0 "report from claims.json" -- "$affinterp" report --in "$work/r/claims.json"
+expect 1 "report from garbage" -- "$affinterp" report --in /dev/null
+one_line_error "report from garbage"
+
+echo "$failures failed"
+[ "$failures" -eq 0 ]
