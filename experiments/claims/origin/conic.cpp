@@ -79,8 +79,10 @@ Outcome check_conic(const RunContext& ctx) {
     out.summary = "the origins with min E1 = min E2(o, o) are exactly the printed conic";
   } else {
     out.verdict = is_conic ? Verdict::corrected : Verdict::refuted;
-    out.summary = "the locus min E1 = min E2(o, o) is " + polynomial_formula(P) + " = 0, not the printed " + polynomial_formula(Q) +
-                  " = 0 (which misses o = (0, 0), where both energies are E1 by definition)";
+    out.summary = "the locus min E1 = min E2(o, o) is " + polynomial_formula(P) + " = 0, not the printed " +
+                  polynomial_formula(Q) + " = 0";
+    if (!Q.subs(at_zero).is_zero())
+      out.summary += " (which misses o = (0, 0), where both energies are E1 by definition)";
     if (is_conic) out.correction = "the origins with min E1 = min E2(o, o) form the conic " + polynomial_formula(P) + " = 0";
     nlohmann::json ce = {{"A1", exact_matrix(study.config.A[0])}, {"A2", exact_matrix(study.config.A[1])},
                          {"min E1", exact_number(min_E1)}};

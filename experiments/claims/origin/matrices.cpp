@@ -57,6 +57,15 @@ Outcome check_matrices(const RunContext& ctx) {
                       {"A2 p", point(q2)}, {"agree", agrees}});
   }
 
+  // The target triangles A_i(T_i) that the maps imply, corner by corner.
+  nlohmann::json targets = nlohmann::json::object();
+  for (unsigned i = 0; i < 2; ++i) {
+    nlohmann::json corners = nlohmann::json::array();
+    for (unsigned k : config.triangles[i])
+      corners.push_back(point(origin::apply(config.A[i], origin::column(config.source(0, k), config.source(1, k)))));
+    targets[i == 0 ? "A1(T1) = (A1 p1, A1 p2, A1 p3)" : "A2(T2) = (A2 p2, A2 p4, A2 p3)"] = corners;
+  }
+
   Outcome out;
   out.evidence.method = "exact symbolic identities in x, y and v (GiNaC, rational arithmetic)";
   out.evidence.sample_size = 7;
@@ -73,6 +82,7 @@ Outcome check_matrices(const RunContext& ctx) {
       {"A2 = T(A2(0), -o)", A2_holds},
       {"A1, A2 agree on the shared edge", shared_edge_agrees},
       {"shared vertices", shared},
+      {"target triangles", targets},
   };
 
   const bool origin_role = B1_holds && A1_holds && A2_holds && B2_intended;

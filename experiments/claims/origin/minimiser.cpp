@@ -76,7 +76,9 @@ Outcome check_minimiser(const RunContext& ctx) {
   if (first_wrong.empty() && random_mismatches == 0) {
     out.verdict = Verdict::confirmed;
     out.summary = "all eight printed coordinates equal the exact minimiser of E2(o, o) as rational functions of "
-                  "(x, y) (v2 = (1/2, 2), v3 = (2, 7/2) independent of o)";
+                  "(x, y) (v2 = (" + computed["v2x"].get<std::string>() + ", " + computed["v2y"].get<std::string>() +
+                  "), v3 = (" + computed["v3x"].get<std::string>() + ", " + computed["v3y"].get<std::string>() +
+                  ") whatever the origin)";
   } else {
     out.verdict = Verdict::refuted;
     out.summary = "the printed " + (first_wrong.empty() ? std::string("minimiser") : first_wrong) +
