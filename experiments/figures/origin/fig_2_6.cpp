@@ -35,7 +35,7 @@ std::vector<std::string> draw_fig_2_6(const claims::RunContext& ctx, const origi
   const Eigen::Matrix<double, 2, 4> p = source_vertices(config);
   const std::vector<std::string> files =
       plots::Figure(ctx.figure_stem("thesis-fig2.6"))
-          .size(760, 700)
+          .size(760, 800)
           .data("computed", grid(computed_locus))
           .data("printed", grid(printed_conic))
           .data("T1", triangle_outline(config, 0, p))
@@ -55,10 +55,10 @@ unset contour
 set size ratio -1
 set xrange [-W:W]
 set yrange [-W:W]
-set xlabel 'x (origin o = (x, y))'
+set xlabel 'x'
 set ylabel 'y'
-set key bottom right opaque box
-set title "Thesis Fig. 2.6: origins o with min E1 = min E2(o, o)"
+set key below height 2
+set title "Thesis Fig. 2.6: origins o = (x, y) with min E1 = min E2(o, o)"
 plot $T1 with filledcurves closed fc rgb '#e8e8e8' notitle, \
      $T2 with filledcurves closed fc rgb '#d0d0d0' notitle, \
      $T1 with lines lc rgb '#777777' lw 1 title 'source triangles T1, T2', \
