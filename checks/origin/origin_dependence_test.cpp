@@ -55,7 +55,8 @@ TEST(OriginDependence, RationalPointsOfTheLocusGiveEqualEnergies) {
   const auto points = small_rational_points(equal_energy_polynomial(), 8);
   ASSERT_GE(points.size(), 4u);
   for (const auto& [x, y] : points)
-    EXPECT_TRUE((min_E2(study().config, column(x, y), column(x, y)) - study().min_E1.value).is_zero()) << x << ", " << y;
+    EXPECT_TRUE((min_E2(study().config, column(x, y), column(x, y)) - study().min_E1.value).is_zero())
+        << x << ", " << y;
 }
 
 TEST(OriginDependence, ThePrintedConicMissesTheOriginWhereTheEnergiesCoincideByDefinition) {

@@ -83,7 +83,8 @@ Outcome check_conic(const RunContext& ctx) {
                   polynomial_formula(Q) + " = 0";
     if (!Q.subs(at_zero).is_zero())
       out.summary += " (which misses o = (0, 0), where both energies are E1 by definition)";
-    if (is_conic) out.correction = "the origins with min E1 = min E2(o, o) form the conic " + polynomial_formula(P) + " = 0";
+    if (is_conic)
+      out.correction = "the origins with min E1 = min E2(o, o) form the conic " + polynomial_formula(P) + " = 0";
     nlohmann::json ce = {{"A1", exact_matrix(study.config.A[0])}, {"A2", exact_matrix(study.config.A[1])},
                          {"min E1", exact_number(min_E1)}};
     if (const auto p = first_off(on_P, Q)) {
