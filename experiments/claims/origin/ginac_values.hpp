@@ -1,0 +1,24 @@
+#pragma once
+// GiNaC values in claims.json: exact numbers as "p/q" strings, matrices as arrays of rows, formulas as
+// text in GiNaC's notation (x^2 for x², * for products).
+#include <ginac/ginac.h>
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace affinterp::claims {
+
+/// An exact rational number as "p/q"; throws std::invalid_argument when `e` is not one.
+std::string exact_number(const GiNaC::ex& e);
+
+/// An exact numeric GiNaC matrix as an array of rows of "p/q" strings.
+nlohmann::json exact_matrix(const GiNaC::matrix& m);
+
+/// A formula as text in GiNaC's own term order, e.g. "y^2+y+x^2-4*y*x+x".
+std::string formula(const GiNaC::ex& e);
+
+/// A polynomial in x, y (the origin) with rational coefficients, terms by falling total degree, then
+/// falling degree in x: "x^2 - 4*x*y + y^2 + x + y - 1/4".
+std::string polynomial_formula(const GiNaC::ex& P);
+
+}  // namespace affinterp::claims
