@@ -29,12 +29,6 @@ constexpr int edge_ends[3][2] = {{0, 1}, {1, 2}, {2, 0}};
 
 }  // namespace
 
-SymExpBatch elementwise(Matrix3d (*exp)(const Matrix3d&)) {
-  return [exp](std::span<const Matrix3d> in, std::span<Matrix3d> out) {
-    for (std::size_t i = 0; i < in.size(); ++i) out[i] = exp(in[i]);
-  };
-}
-
 Deformation3::Deformation3(const Mesh3& source, const Mesh3& target) : source_(source) {
   if (target.vertex_count() != source.vertex_count() || target.triangles != source.triangles)
     throw std::invalid_argument("source and target meshes differ in connectivity");

@@ -4,22 +4,15 @@
 // exponential, followed by a global Poisson-style least-squares solve for the vertex positions
 // (Xu et al. [14]; Kaji §4 with the energy E^F). Only the per-frame exponential depends on the
 // algorithm under test, as in the thesis, which replaced "the exponential part" of the deformer.
+#include "experiments/sym3/exp_batch.hpp"
 #include "experiments/sym3/mesh3.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/SparseCholesky>
 
-#include <functional>
-#include <span>
 #include <vector>
 
 namespace affinterp::sym3 {
-
-/// out[i] = exp(in[i]) for symmetric 3×3 matrices; in.size() == out.size().
-using SymExpBatch = std::function<void(std::span<const Eigen::Matrix3d>, std::span<Eigen::Matrix3d>)>;
-
-/// A batch exponential applying a scalar exponential to each matrix in turn.
-SymExpBatch elementwise(Eigen::Matrix3d (*exp)(const Eigen::Matrix3d&));
 
 class Deformation3 {
  public:
