@@ -1,0 +1,149 @@
+#pragma once
+// The eigen-structure of S ∈ Sym(3) that our algorithms ("affinterp") use: the mean eigenvalue, the
+// eigenpair that lies farthest from the other two, and the remaining pair described by its mean, its
+// half-gap and its deviatoric part on the orthogonal complement. No eigenvalue gap is ever divided by,
+// so clustered and repeated eigenvalues are as accurate as distinct ones.
+//
+// Written once over a lane type T: double (one matrix) or an xsimd batch (several matrices, see
+// exp_batched.cpp). Functions of T are called unqualified so that xsimd's overloads are found by ADL.
+#include <cmath>
+
+namespace affinterp::sym3::split {
+
+/// The six independent entries of a symmetric 3×3 matrix.
+template <class T>
+struct Sym {
+  T xx, yy, zz, xy, xz, yz;
+};
+
+/// Lane-wise choice for plain doubles; xsimd::select serves the batches.
+inline double select(bool condition, double if_true, double if_false) {
+  return condition ? if_true : if_false;
+}
+
+/// S = λ_far v vᵀ + (λ_mid I + K)|_{v⊥}: with the pair's eigenvalues λ_mid ± ρ.
+template <class T>
+struct SpectralSplit {
+  T lambda_far;  ///< the eigenvalue farthest from the other two
+  T v[3];        ///< its unit eigenvector
+  T lambda_mid;  ///< mean of the other two eigenvalues
+  T rho;         ///< half their gap (≥ 0)
+  Sym<T> K;      ///< S − λ_far v vᵀ − λ_mid (I − v vᵀ): eigenvalues 0, ±ρ
+};
+
+/// Largest root of x³ − x/2 − τ = 0 for 0 ≤ τ ≤ 1/(3√6): the characteristic equation of a traceless
+/// symmetric matrix of unit Frobenius norm (thesis §3.2 with tr S = 0, ‖S‖_F = 1, τ = det S).
+/// On that range the root lies in [1/√2, √(2/3)] where the derivative 3x² − 1/2 ≥ 1, so Newton's
+/// method from a quadratic first guess (error < 2·10⁻³) converges to full precision in 3 steps.
+template <class T>
+T far_root(T tau) {
+  T x = T(0.70710678118654752) + tau * (T(1.0) + tau * T(-1.4413));
+  for (int step = 0; step < 3; ++step) {
+    x = x - (x * x * x - T(0.5) * x - tau) / (T(3.0) * x * x - T(0.5));
+  }
+  return x;
+}
+
+/// The split of S: shift by the mean eigenvalue m = tr S / 3, normalise the deviatoric part
+/// B = S − mI to B̂ = B/σ (σ = ‖B‖_F), take the eigenvalue of B̂ farthest from the other two (the
+/// largest when det B̂ ≥ 0, else the smallest: its distance to the pair is at least 1/√2), its
+/// eigenvector from the adjugate of B̂ − ℓI (whose columns are all multiples of it), and the pair from
+/// what remains.
+template <class T>
+SpectralSplit<T> spectral_split(const Sym<T>& S) {
+  using std::abs;
+  using std::copysign;
+  using std::max;
+  using std::sqrt;
+  const T m = (S.xx + S.yy + S.zz) * T(1.0 / 3.0);
+  const Sym<T> B{S.xx - m, S.yy - m, S.zz - m, S.xy, S.xz, S.yz};
+
+  // σ without overflow or underflow: scale by the largest entry first.
+  const T amax = max(max(max(abs(B.xx), abs(B.yy)), max(abs(B.zz), abs(B.xy))), max(abs(B.xz), abs(B.yz)));
+  const auto zero = amax == T(0.0);
+  const T inv_amax = T(1.0) / select(zero, T(1.0), amax);
+  const Sym<T> Bs{B.xx * inv_amax, B.yy * inv_amax, B.zz * inv_amax,
+                  B.xy * inv_amax, B.xz * inv_amax, B.yz * inv_amax};
+  const T n2 = Bs.xx * Bs.xx + Bs.yy * Bs.yy + Bs.zz * Bs.zz +
+               T(2.0) * (Bs.xy * Bs.xy + Bs.xz * Bs.xz + Bs.yz * Bs.yz);
+  const T norm_s = sqrt(select(zero, T(1.0), n2));
+  const T sigma = amax * norm_s;
+  const T inv_norm = T(1.0) / norm_s;
+  const Sym<T> Bh{Bs.xx * inv_norm, Bs.yy * inv_norm, Bs.zz * inv_norm,
+                  Bs.xy * inv_norm, Bs.xz * inv_norm, Bs.yz * inv_norm};
+
+  const T det = Bh.xx * (Bh.yy * Bh.zz - Bh.yz * Bh.yz) - Bh.xy * (Bh.xy * Bh.zz - Bh.yz * Bh.xz) +
+                Bh.xz * (Bh.xy * Bh.yz - Bh.yy * Bh.xz);
+  const T ell = copysign(far_root(abs(det)), det);
+
+  // Adjugate of C = B̂ − ℓI = (ℓ_pair1 − ℓ)(ℓ_pair2 − ℓ) v vᵀ: take its column of largest diagonal.
+  const T cxx = Bh.xx - ell, cyy = Bh.yy - ell, czz = Bh.zz - ell;
+  const T axx = cyy * czz - Bh.yz * Bh.yz, ayy = czz * cxx - Bh.xz * Bh.xz, azz = cxx * cyy - Bh.xy * Bh.xy;
+  const T axy = Bh.xz * Bh.yz - Bh.xy * czz, axz = Bh.xy * Bh.yz - Bh.xz * cyy, ayz = Bh.xy * Bh.xz - cxx * Bh.yz;
+  const auto take_x = (abs(axx) >= abs(ayy)) & (abs(axx) >= abs(azz));
+  const auto take_y = abs(ayy) >= abs(azz);
+  const T u0 = select(take_x, axx, select(take_y, axy, axz));
+  const T u1 = select(take_x, axy, select(take_y, ayy, ayz));
+  const T u2 = select(take_x, axz, select(take_y, ayz, azz));
+  const T inv_u = T(1.0) / sqrt(u0 * u0 + u1 * u1 + u2 * u2);
+
+  SpectralSplit<T> out;
+  out.v[0] = u0 * inv_u;
+  out.v[1] = u1 * inv_u;
+  out.v[2] = u2 * inv_u;
+  // K̂ = B̂ − ℓ v vᵀ + (ℓ/2)(I − v vᵀ) = B̂ + (ℓ/2) I − (3ℓ/2) v vᵀ, traceless with eigenvalues 0, ±ρ̂.
+  const T half = T(0.5) * ell, three_half = T(1.5) * ell;
+  const T* v = out.v;
+  const Sym<T> Kh{Bh.xx + half - three_half * v[0] * v[0], Bh.yy + half - three_half * v[1] * v[1],
+                  Bh.zz + half - three_half * v[2] * v[2], Bh.xy - three_half * v[0] * v[1],
+                  Bh.xz - three_half * v[0] * v[2], Bh.yz - three_half * v[1] * v[2]};
+  const T rho_hat = sqrt(T(0.5) * (Kh.xx * Kh.xx + Kh.yy * Kh.yy + Kh.zz * Kh.zz) +
+                         (Kh.xy * Kh.xy + Kh.xz * Kh.xz + Kh.yz * Kh.yz));
+  out.lambda_far = m + sigma * ell;
+  out.lambda_mid = m - sigma * half;
+  out.rho = sigma * rho_hat;
+  out.K = Sym<T>{sigma * Kh.xx, sigma * Kh.yy, sigma * Kh.zz, sigma * Kh.xy, sigma * Kh.xz, sigma * Kh.yz};
+  return out;
+}
+
+/// f(S) = f_far v vᵀ + f_pair (I − v vᵀ) + f_dd K, where f_pair = (f(λ_mid + ρ) + f(λ_mid − ρ))/2
+/// and f_dd = f[λ_mid − ρ, λ_mid + ρ] is the divided difference (f′(λ_mid) when ρ = 0).
+template <class T>
+Sym<T> assemble(const SpectralSplit<T>& s, T f_far, T f_pair, T f_dd) {
+  const T w = f_far - f_pair;
+  const T* v = s.v;
+  return Sym<T>{f_pair + w * v[0] * v[0] + f_dd * s.K.xx, f_pair + w * v[1] * v[1] + f_dd * s.K.yy,
+                f_pair + w * v[2] * v[2] + f_dd * s.K.zz, w * v[0] * v[1] + f_dd * s.K.xy,
+                w * v[0] * v[2] + f_dd * s.K.xz,          w * v[1] * v[2] + f_dd * s.K.yz};
+}
+
+/// exp(S) from the split: e^{λ_mid} cosh ρ and e^{λ_mid} sinh ρ / ρ, the latter by its Taylor series
+/// for ρ < 1/2 (no cancellation for tiny or zero gaps) and from e^{±ρ} otherwise.
+template <class T>
+Sym<T> exp_from_split(const SpectralSplit<T>& s) {
+  using std::exp;
+  const T e_far = exp(s.lambda_far);
+  const T e_mid = exp(s.lambda_mid);
+  const T e_rho = exp(s.rho);
+  const T e_mrho = T(1.0) / e_rho;
+  const T r2 = s.rho * s.rho;
+  // Series of cosh ρ and sinh ρ / ρ in ρ², enough terms for ρ ≤ 1/2 (next term < 10⁻¹⁹).
+  T cosh_series = T(1.0 / 20922789888000.0);  // 1/16!
+  T sinhc_series = T(1.0 / 355687428096000.0);  // 1/17!
+  constexpr double inv_fact_even[] = {1.0 / 87178291200.0, 1.0 / 479001600.0, 1.0 / 3628800.0,
+                                      1.0 / 40320.0,       1.0 / 720.0,       1.0 / 24.0,
+                                      1.0 / 2.0,           1.0};
+  constexpr double inv_fact_odd[] = {1.0 / 1307674368000.0, 1.0 / 6227020800.0, 1.0 / 39916800.0,
+                                     1.0 / 362880.0,        1.0 / 5040.0,       1.0 / 120.0,
+                                     1.0 / 6.0,             1.0};
+  for (int i = 0; i < 8; ++i) {
+    cosh_series = cosh_series * r2 + T(inv_fact_even[i]);
+    sinhc_series = sinhc_series * r2 + T(inv_fact_odd[i]);
+  }
+  const auto small = s.rho < T(0.5);
+  const T cosh_rho = select(small, cosh_series, T(0.5) * (e_rho + e_mrho));
+  const T sinhc_rho = select(small, sinhc_series, (e_rho - e_mrho) / (T(2.0) * select(small, T(1.0), s.rho)));
+  return assemble(s, e_far, e_mid * cosh_rho, e_mid * sinhc_rho);
+}
+
+}  // namespace affinterp::sym3::split
