@@ -8,7 +8,8 @@
 
 namespace affinterp::sym3 {
 
-void exp_batched(std::span<const Mat3> in, std::span<Mat3> out) {
+// Flattened so that the split and the exponential stay in registers (no struct round trips).
+[[gnu::flatten]] void exp_batched(std::span<const Mat3> in, std::span<Mat3> out) {
   assert(in.size() == out.size());
   using Batch = xsimd::batch<double>;
   constexpr std::size_t W = Batch::size;
