@@ -22,7 +22,7 @@ void run(const Eig3Options& options) {
   }
   const sym3::EigAlgorithm* algorithm = sym3::find_eig(options.algorithm);
   if (!algorithm) throw CommandFailed("unknown algorithm '" + options.algorithm + "' (see eig3 --list)", usage_error);
-  for_each_symmetric_matrix(std::cin, [&](const sym3::Mat3& S) {
+  for_each_symmetric_matrix(std::cin, [&](const sym3::Mat3& S, std::size_t) {
     const sym3::Vec3 lambda = algorithm->eigenvalues(S);
     write_line(std::cout, std::span<const double>(lambda.data(), 3));
   });

@@ -54,12 +54,12 @@ sym3::Mat3 parse(const std::string& line, std::size_t number) {
 
 }  // namespace
 
-void for_each_symmetric_matrix(std::istream& in, const std::function<void(const sym3::Mat3&)>& each) {
+void for_each_symmetric_matrix(std::istream& in, const std::function<void(const sym3::Mat3&, std::size_t)>& each) {
   std::size_t number = 0;
   for (std::string line; std::getline(in, line);) {
     ++number;
     if (line.find_first_not_of(" \t\r\f\v") == std::string::npos) continue;
-    each(parse(line, number));
+    each(parse(line, number), number);
   }
 }
 

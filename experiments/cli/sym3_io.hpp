@@ -9,10 +9,10 @@
 
 namespace affinterp::cli {
 
-/// Calls `each` on every matrix of `in`: one per line, 9 whitespace-separated numbers, row-major.
-/// Blank lines are skipped. The first line that is not 9 finite numbers forming a symmetric matrix
-/// throws CommandFailed("line N: ...", 1), after `each` has run on every line before it.
-void for_each_symmetric_matrix(std::istream& in, const std::function<void(const sym3::Mat3&)>& each);
+/// Calls `each(S, N)` on every matrix S of `in`, N its line number: one per line, 9 whitespace-separated
+/// numbers, row-major. Blank lines are skipped. The first line that is not 9 finite numbers forming a
+/// symmetric matrix throws CommandFailed("line N: ...", 1), after `each` has run on every line before it.
+void for_each_symmetric_matrix(std::istream& in, const std::function<void(const sym3::Mat3&, std::size_t)>& each);
 
 /// Writes the values on one line with 17 significant digits, and flushes.
 void write_line(std::ostream& out, std::span<const double> values);
