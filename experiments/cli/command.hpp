@@ -18,5 +18,7 @@ inline constexpr int usage_error = 2;
 
 void add_claims_command(CLI::App& app);
 void add_report_command(CLI::App& app);
+void add_exp3_command(CLI::App& app);
+void add_eig3_command(CLI::App& app);
 
 }  // namespace affinterp::cli

@@ -1,0 +1,78 @@
+// The speed verdicts of thesis §3.4 (experiments/claims/sym3/speed.hpp) on synthetic benchmark JSON:
+// absent data is inconclusive, and the verdict follows the measured ratio both ways.
+#include "experiments/claims/sym3/speed.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+
+namespace affinterp::claims::sym3 {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Writes bench_<name>.json in Google Benchmark's format (median aggregates) and returns its folder.
+fs::path write_bench(const std::string& bench, const std::string& counter, const std::map<std::string, double>& times) {
+  const fs::path dir = fs::temp_directory_path() / ("affinterp_speed_test_" + bench);
+  fs::create_directories(dir);
+  nlohmann::json runs = nlohmann::json::array();
+  for (const auto& [name, value] : times) {
+    runs.push_back({{"name", name + "_mean"}, {"run_name", name}, {"run_type", "aggregate"},
+                    {"aggregate_name", "mean"}, {counter, 2 * value}});
+    runs.push_back({{"name", name + "_median"}, {"run_name", name}, {"run_type", "aggregate"},
+                    {"aggregate_name", "median"}, {counter, value}});
+  }
+  std::ofstream(dir / (bench + ".json")) << nlohmann::json{
+      {"context", {{"affinterp_cpu", "Test CPU"}}}, {"benchmarks", runs}}.dump();
+  return dir;
+}
+
+RunContext with_bench(const fs::path& dir) {
+  RunContext ctx;
+  ctx.bench_dir = dir;
+  return ctx;
+}
+
+TEST(SpeedClaims, AreInconclusiveWithoutBenchmarkData) {
+  RunContext ctx;
+  ctx.bench_dir = fs::temp_directory_path() / "affinterp_no_such_folder";
+  for (auto check : {check_eig_speedup, check_exp_speedup, check_app_speedup}) {
+    const Outcome outcome = check(ctx);
+    EXPECT_EQ(outcome.verdict, Verdict::inconclusive);
+    EXPECT_NE(outcome.summary.find("bench_"), std::string::npos) << outcome.summary;
+  }
+}
+
+TEST(SpeedClaims, EigenvalueVerdictFollowsTheMeasuredRatio) {
+  auto near = write_bench("bench_exp3", "ns_per_matrix", {{"eig3/eigen-qr", 100}, {"eig3/viete", 30}});
+  const Outcome reproduced = check_eig_speedup(with_bench(near));
+  EXPECT_EQ(reproduced.verdict, Verdict::reproduced) << reproduced.summary;
+  EXPECT_NEAR(reproduced.evidence.measurements["measured_ratio"].get<double>(), 100.0 / 30, 1e-12);
+  EXPECT_EQ(reproduced.evidence.measurements["machine"]["cpu"], "Test CPU");
+
+  auto far = write_bench("bench_exp3", "ns_per_matrix", {{"eig3/eigen-qr", 100}, {"eig3/viete", 90}});
+  EXPECT_EQ(check_eig_speedup(with_bench(far)).verdict, Verdict::not_reproduced);
+}
+
+TEST(SpeedClaims, ExponentialNeedsPlainSdInBetween) {
+  auto ordered = write_bench("bench_exp3", "ns_per_matrix",
+                             {{"exp3/eigen-qr-diag", 420}, {"exp3/thesis-sd-corrected", 200}, {"exp3/thesis-improved-sd", 100}});
+  EXPECT_EQ(check_exp_speedup(with_bench(ordered)).verdict, Verdict::reproduced);
+  auto disordered = write_bench("bench_exp3", "ns_per_matrix",
+                                {{"exp3/eigen-qr-diag", 420}, {"exp3/thesis-sd-corrected", 90}, {"exp3/thesis-improved-sd", 100}});
+  EXPECT_EQ(check_exp_speedup(with_bench(disordered)).verdict, Verdict::not_reproduced);
+}
+
+TEST(SpeedClaims, ApplicationSlowdownIsNotReproduced) {
+  auto slower = write_bench("bench_app3", "ns_per_frame", {{"app/eigen-qr-diag", 10e6}, {"app/thesis-improved-sd", 11e6}});
+  EXPECT_EQ(check_app_speedup(with_bench(slower)).verdict, Verdict::not_reproduced);
+  auto faster = write_bench("bench_app3", "ns_per_frame", {{"app/eigen-qr-diag", 12e6}, {"app/thesis-improved-sd", 10e6}});
+  EXPECT_EQ(check_app_speedup(with_bench(faster)).verdict, Verdict::reproduced);
+}
+
+}  // namespace
+}  // namespace affinterp::claims::sym3

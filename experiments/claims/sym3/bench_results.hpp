@@ -1,0 +1,28 @@
+#pragma once
+// Reading the Google Benchmark JSON written by build/bin/bench_* (experiments/reproduce.sh stores it in
+// reports/bench/), for the speed claims of thesis §3.4.
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+
+namespace affinterp::claims::sym3 {
+
+struct BenchResults {
+  std::filesystem::path file;
+  std::string machine;  ///< the CPU model recorded in the JSON context (bench_context.hpp)
+  std::string compiler, flags;
+  /// Per benchmark name (without aggregate suffix): the median over repetitions of `counter`.
+  std::map<std::string, double, std::less<>> median;
+  /// Benchmarks that reported an error (e.g. missing data), with the message.
+  std::map<std::string, std::string, std::less<>> errors;
+
+  /// The median of a benchmark; nullopt when it did not run.
+  std::optional<double> operator[](std::string_view name) const;
+};
+
+/// Reads `file` and takes `counter` (e.g. "ns_per_matrix") of each benchmark; nullopt when the file is
+/// absent. Throws std::runtime_error when it is not a Google Benchmark JSON file.
+std::optional<BenchResults> read_bench_results(const std::filesystem::path& file, const std::string& counter);
+
+}  // namespace affinterp::claims::sym3
