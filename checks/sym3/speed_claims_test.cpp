@@ -15,15 +15,20 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// Writes bench_<name>.json in Google Benchmark's format (median aggregates) and returns its folder.
+/// Writes bench_<name>.json in Google Benchmark's format (median aggregates; run names carrying the
+/// options set in code, as bench_exp3 writes them) and returns its folder.
 fs::path write_bench(const std::string& bench, const std::string& counter, const std::map<std::string, double>& times) {
-  const fs::path dir = fs::temp_directory_path() / ("affinterp_speed_test_" + bench);
+  // One folder per test and call: CTest runs the tests in parallel processes.
+  static int call = 0;
+  const fs::path dir = fs::temp_directory_path() /
+                       ("affinterp_speed_test_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()) +
+                        "_" + std::to_string(++call));
   fs::create_directories(dir);
   nlohmann::json runs = nlohmann::json::array();
   for (const auto& [name, value] : times) {
-    runs.push_back({{"name", name + "_mean"}, {"run_name", name}, {"run_type", "aggregate"},
+    runs.push_back({{"name", name + "_mean"}, {"run_name", name + "/min_time:0.200/repeats:5"}, {"run_type", "aggregate"},
                     {"aggregate_name", "mean"}, {counter, 2 * value}});
-    runs.push_back({{"name", name + "_median"}, {"run_name", name}, {"run_type", "aggregate"},
+    runs.push_back({{"name", name + "_median"}, {"run_name", name + "/min_time:0.200/repeats:5"}, {"run_type", "aggregate"},
                     {"aggregate_name", "median"}, {counter, value}});
   }
   std::ofstream(dir / (bench + ".json")) << nlohmann::json{
