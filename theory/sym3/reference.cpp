@@ -106,6 +106,7 @@ double relative_error(const Mat3& X, const Mat3R50& E) {
 }
 
 double eigenvalue_error(const Vec3& x, const Vec3R50& e) {
+  if (!x.allFinite()) return NAN;
   Real50 worst = 0, scale = 1;
   for (int i = 0; i < 3; ++i) {
     worst = std::max(worst, Real50(abs(Real50(x(i)) - e(i))));

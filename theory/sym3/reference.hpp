@@ -40,7 +40,7 @@ Vec3R50 reference_eigenvalues(const Mat3& S);
 
 /// ‖X − E‖_F / ‖E‖_F, evaluated at 50 digits and returned as a double.
 double relative_error(const Mat3& X, const Mat3R50& E);
-/// max_i |x_i − e_i| / max(1, max_i |e_i|), at 50 digits (eigenvalues).
+/// max_i |x_i − e_i| / max(1, max_i |e_i|), at 50 digits (eigenvalues); NaN if x is not finite.
 double eigenvalue_error(const Vec3& x, const Vec3R50& e);
 
 }  // namespace affinterp::sym3

@@ -21,10 +21,6 @@ SdCoefficients<double> sd_coefficients(const std::array<double, 3>& lambda, SdRe
   return sd_case3(l1, l2, l3, reading);
 }
 
-Mat3 sd_polynomial(const Mat3& S, const SdCoefficients<double>& c) {
-  return c.x * (S * S) + c.y * S + c.z * Mat3::Identity();
-}
-
 Mat3 exp_sd_printed(const Mat3& S) {
   return sd_polynomial(S, sd_coefficients(as_array(eigenvalues_eigen_qr(S)), SdReading::printed));
 }

@@ -58,7 +58,11 @@ inline constexpr double sd_threshold = 1e-6;
 SdCoefficients<double> sd_coefficients(const std::array<double, 3>& lambda, SdReading reading);
 
 /// xS² + yS + zE.
-Mat3 sd_polynomial(const Mat3& S, const SdCoefficients<double>& c);
+template <class Real>
+Eigen::Matrix<Real, 3, 3> sd_polynomial(const Eigen::Matrix<Real, 3, 3>& S, const SdCoefficients<Real>& c) {
+  using M = Eigen::Matrix<Real, 3, 3>;
+  return M(c.x * (S * S) + c.y * S + c.z * M::Identity());
+}
 
 /// "thesis-sd-printed" / "thesis-sd-corrected": eigenvalues from Eigen's QR solver, then §3.1.2.
 Mat3 exp_sd_printed(const Mat3& S);

@@ -16,12 +16,19 @@ struct VieteParameters {
   Real trace, frobenius2, det, p, q, r, k;
 };
 
+/// The printed p and q alone: rational in the entries, so exact over exact::Rational.
+template <class Real>
+std::array<Real, 2> viete_pq(const Real& trace, const Real& frobenius2, const Real& det) {
+  return {(trace * trace - 3 * frobenius2) / 6, Real(5) / 54 * trace * trace * trace - trace * frobenius2 / 6 - det};
+}
+
 template <class Real>
 VieteParameters<Real> viete_parameters(const Real& trace, const Real& frobenius2, const Real& det) {
   using std::sqrt;
   VieteParameters<Real> v{trace, frobenius2, det, {}, {}, {}, {}};
-  v.p = (trace * trace - 3 * frobenius2) / 6;
-  v.q = Real(5) / 54 * trace * trace * trace - trace * frobenius2 / 6 - det;
+  const auto [p, q] = viete_pq(trace, frobenius2, det);
+  v.p = p;
+  v.q = q;
   v.r = sqrt(-12 * v.p);
   v.k = -108 * v.q / (v.r * v.r * v.r);
   return v;
