@@ -282,7 +282,8 @@ Outcome check_exp_accuracy(const RunContext& ctx) {
        "corrected x) with the printed 10⁻⁶ equality threshold. Printed reading: thesis-improved-sd, Viète "
        "exactly as printed (NaN when rounding gives p > 0 or |k| > 1). Intended reading: "
        "thesis-improved-sd-clamped, the same with p clamped to ≤ 0 and k to [−1, 1]. 'Error' = relative "
-       "Frobenius error. Tested on every family whose spectrum lies in [0, 3]; the thesis distribution MᵀM "
+       "Frobenius error (an absolute reading gives larger errors: for eigenvalues in [0, 3], ‖exp S‖_F ≥ √3, "
+       "so it fails wherever this one does). Tested on every family whose spectrum lies in [0, 3]; the thesis distribution MᵀM "
        "reaches 9 and is reported but not part of the claim."},
       {"matrices_per_family", per_family},
       {"families", family_list},
