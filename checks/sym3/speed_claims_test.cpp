@@ -79,5 +79,18 @@ TEST(SpeedClaims, ApplicationSlowdownIsNotReproduced) {
   EXPECT_EQ(check_app_speedup(with_bench(faster)).verdict, Verdict::reproduced);
 }
 
+TEST(SpeedClaims, ApplicationWithoutMeshDataIsInconclusive) {
+  const fs::path dir = fs::temp_directory_path() / "affinterp_speed_test_no_mesh";
+  fs::create_directories(dir);
+  nlohmann::json runs = nlohmann::json::array();
+  for (const char* name : {"app/eigen-qr-diag", "app/thesis-improved-sd"})
+    runs.push_back({{"name", name}, {"run_name", name}, {"run_type", "iteration"}, {"error_occurred", true},
+                    {"error_message", "the CGAL demo data is absent"}});
+  std::ofstream(dir / "bench_app3.json") << nlohmann::json{{"context", nlohmann::json::object()}, {"benchmarks", runs}}.dump();
+  const Outcome outcome = check_app_speedup(with_bench(dir));
+  EXPECT_EQ(outcome.verdict, Verdict::inconclusive);
+  EXPECT_NE(outcome.summary.find("CGAL demo data is absent"), std::string::npos) << outcome.summary;
+}
+
 }  // namespace
 }  // namespace affinterp::claims::sym3
