@@ -79,6 +79,15 @@ TEST(SpeedClaims, ApplicationSlowdownIsNotReproduced) {
   EXPECT_EQ(check_app_speedup(with_bench(faster)).verdict, Verdict::reproduced);
 }
 
+TEST(SpeedClaims, UnreadableBenchmarkOutputIsInconclusive) {
+  const fs::path dir = fs::temp_directory_path() / "affinterp_speed_test_unreadable";
+  fs::create_directories(dir);
+  std::ofstream(dir / "bench_exp3.json") << "{\"benchmarks\": [{\"cv\": NaN}]}";
+  const Outcome outcome = check_eig_speedup(with_bench(dir));
+  EXPECT_EQ(outcome.verdict, Verdict::inconclusive);
+  EXPECT_NE(outcome.summary.find("unreadable"), std::string::npos) << outcome.summary;
+}
+
 TEST(SpeedClaims, ApplicationWithoutMeshDataIsInconclusive) {
   const fs::path dir = fs::temp_directory_path() / "affinterp_speed_test_no_mesh";
   fs::create_directories(dir);

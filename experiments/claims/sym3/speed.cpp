@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 #include <variant>
 #include <string>
 #include <vector>
@@ -56,7 +57,12 @@ std::variant<BenchResults, Outcome> load(const RunContext& ctx, const std::strin
   const std::string run = "run build/bin/" + bench + " --benchmark_out=reports/bench/" + bench +
                           ".json --benchmark_out_format=json (experiments/reproduce.sh does)";
   if (ctx.bench_dir.empty()) return inconclusive("no benchmark folder given: " + run, method);
-  const auto results = read_bench_results(ctx.bench_dir / (bench + ".json"), counter);
+  std::optional<BenchResults> results;
+  try {
+    results = read_bench_results(ctx.bench_dir / (bench + ".json"), counter);
+  } catch (const std::runtime_error& e) {
+    return inconclusive(std::string("unreadable benchmark output: ") + e.what() + "; " + run, method);
+  }
   if (!results) return inconclusive((ctx.bench_dir / (bench + ".json")).string() + " is absent: " + run, method);
   return *results;
 }
