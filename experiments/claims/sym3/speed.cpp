@@ -193,6 +193,9 @@ Outcome check_exp_speedup(const RunContext& ctx) {
       {"paper_ratio", paper},
       {"paper_machine", kPaperMachine},
       {"benchmarks", {kDiag, kSd, kImprovedSd}},
+      {"reading", "Diag = Eigen's QR-based SelfAdjointEigenSolver with eigenvectors (§3.1.1); plain SD = §3.1.2 on "
+                  "the eigenvalues of that solver (the thesis names no solver for SD; improved SD differs from it "
+                  "only by Viète's eigenvalues, §3.2)"},
       {"about", kAboutReading},
       {"rule", "reproduced iff time(Diag)/time(improved SD) lies in [paper / 1.5, paper · 1.5] and exceeds 1, "
                "and time(improved SD) < time(SD) < time(Diag)"},
