@@ -180,7 +180,10 @@ Outcome check_exp_speedup(const RunContext& ctx) {
   constexpr double paper = 4.2;
   const double diag = *results[kDiag], sd = *results[kSd], improved = *results[kImprovedSd];
   const double ratio = diag / improved;
-  const bool sd_between = improved < sd && sd < diag;
+  // "In between" must show beyond run-to-run noise: SD at least kMargin faster than Diag and slower than
+  // improved SD (medians of repeated runs on a shared machine moved by several percent between runs).
+  constexpr double kMargin = 1.05;
+  const bool sd_between = improved * kMargin < sd && sd * kMargin < diag;
   Outcome outcome;
   outcome.verdict = about(ratio, paper) && sd_between ? Verdict::reproduced : Verdict::not_reproduced;
   outcome.summary = "improved SD is " + fixed(ratio) + "× faster than Diag here (thesis: about " + fixed(paper, 1) +
@@ -198,7 +201,7 @@ Outcome check_exp_speedup(const RunContext& ctx) {
                   "only by Viète's eigenvalues, §3.2)"},
       {"about", kAboutReading},
       {"rule", "reproduced iff time(Diag)/time(improved SD) lies in [paper / 1.5, paper · 1.5] and exceeds 1, "
-               "and time(improved SD) < time(SD) < time(Diag)"},
+               "and time(improved SD) < time(SD) < time(Diag) with 5% to spare on each side (beyond run-to-run noise)"},
   };
   nlohmann::json ns = nlohmann::json::object();
   for (const auto& [name, value] : results.median)
