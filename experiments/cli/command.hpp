@@ -17,5 +17,7 @@ struct CommandFailed : std::runtime_error {
 inline constexpr int usage_error = 2;
 
 void add_claims_command(CLI::App& app);
+void add_exp3_command(CLI::App& app);
+void add_eig3_command(CLI::App& app);
 
 }  // namespace affinterp::cli

@@ -11,6 +11,8 @@ int main(int argc, char** argv) {
       "affinterp"};
   app.require_subcommand(1);
   add_claims_command(app);
+  add_exp3_command(app);
+  add_eig3_command(app);
 
   try {
     app.parse(argc, argv);

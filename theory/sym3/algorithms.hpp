@@ -35,7 +35,8 @@ std::span<const ExpAlgorithm> exp_algorithms();
 const EigAlgorithm* find_eig(std::string_view name);
 const ExpAlgorithm* find_exp(std::string_view name);
 
-/// Ours, batched over arrays (SIMD): out[i] = exp(in[i]). in and out have the same size.
+/// Ours, batched over arrays (SIMD): out[i] = exp(in[i]). Throws std::invalid_argument when in and
+/// out differ in size.
 void exp_batched(std::span<const Mat3> in, std::span<Mat3> out);
 
 }  // namespace affinterp::sym3
