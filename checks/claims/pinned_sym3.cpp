@@ -11,6 +11,8 @@ const std::vector<Pin> pins = {
     {"thesis.sd.case1", Verdict::confirmed},
     {"thesis.sd.case2", Verdict::confirmed},
     {"thesis.sd.case3", Verdict::corrected},
+    // Measured speed verdicts (thesis.*.speedup) depend on the machine and are never pinned.
+    {"thesis.exp.accuracy", Verdict::refuted},
 };
 
 }  // namespace

@@ -15,15 +15,20 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// Writes bench_<name>.json in Google Benchmark's format (median aggregates) and returns its folder.
+/// Writes bench_<name>.json in Google Benchmark's format (median aggregates; run names carrying the
+/// options set in code, as bench_exp3 writes them) and returns its folder.
 fs::path write_bench(const std::string& bench, const std::string& counter, const std::map<std::string, double>& times) {
-  const fs::path dir = fs::temp_directory_path() / ("affinterp_speed_test_" + bench);
+  // One folder per test and call: CTest runs the tests in parallel processes.
+  static int call = 0;
+  const fs::path dir = fs::temp_directory_path() /
+                       ("affinterp_speed_test_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()) +
+                        "_" + std::to_string(++call));
   fs::create_directories(dir);
   nlohmann::json runs = nlohmann::json::array();
   for (const auto& [name, value] : times) {
-    runs.push_back({{"name", name + "_mean"}, {"run_name", name}, {"run_type", "aggregate"},
+    runs.push_back({{"name", name + "_mean"}, {"run_name", name + "/min_time:0.200/repeats:5"}, {"run_type", "aggregate"},
                     {"aggregate_name", "mean"}, {counter, 2 * value}});
-    runs.push_back({{"name", name + "_median"}, {"run_name", name}, {"run_type", "aggregate"},
+    runs.push_back({{"name", name + "_median"}, {"run_name", name + "/min_time:0.200/repeats:5"}, {"run_type", "aggregate"},
                     {"aggregate_name", "median"}, {counter, value}});
   }
   std::ofstream(dir / (bench + ".json")) << nlohmann::json{
@@ -72,6 +77,28 @@ TEST(SpeedClaims, ApplicationSlowdownIsNotReproduced) {
   EXPECT_EQ(check_app_speedup(with_bench(slower)).verdict, Verdict::not_reproduced);
   auto faster = write_bench("bench_app3", "ns_per_frame", {{"app/eigen-qr-diag", 12e6}, {"app/thesis-improved-sd", 10e6}});
   EXPECT_EQ(check_app_speedup(with_bench(faster)).verdict, Verdict::reproduced);
+}
+
+TEST(SpeedClaims, UnreadableBenchmarkOutputIsInconclusive) {
+  const fs::path dir = fs::temp_directory_path() / "affinterp_speed_test_unreadable";
+  fs::create_directories(dir);
+  std::ofstream(dir / "bench_exp3.json") << "{\"benchmarks\": [{\"cv\": NaN}]}";
+  const Outcome outcome = check_eig_speedup(with_bench(dir));
+  EXPECT_EQ(outcome.verdict, Verdict::inconclusive);
+  EXPECT_NE(outcome.summary.find("unreadable"), std::string::npos) << outcome.summary;
+}
+
+TEST(SpeedClaims, ApplicationWithoutMeshDataIsInconclusive) {
+  const fs::path dir = fs::temp_directory_path() / "affinterp_speed_test_no_mesh";
+  fs::create_directories(dir);
+  nlohmann::json runs = nlohmann::json::array();
+  for (const char* name : {"app/eigen-qr-diag", "app/thesis-improved-sd"})
+    runs.push_back({{"name", name}, {"run_name", name}, {"run_type", "iteration"}, {"error_occurred", true},
+                    {"error_message", "the CGAL demo data is absent"}});
+  std::ofstream(dir / "bench_app3.json") << nlohmann::json{{"context", nlohmann::json::object()}, {"benchmarks", runs}}.dump();
+  const Outcome outcome = check_app_speedup(with_bench(dir));
+  EXPECT_EQ(outcome.verdict, Verdict::inconclusive);
+  EXPECT_NE(outcome.summary.find("CGAL demo data is absent"), std::string::npos) << outcome.summary;
 }
 
 }  // namespace

@@ -2,10 +2,29 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <stdexcept>
 
 namespace affinterp::claims::sym3 {
+
+namespace {
+
+/// The benchmark's own name: run names carry options set in code as extra components
+/// ("exp3/affinterp/min_time:0.200/repeats:5"), which are dropped.
+std::string base_name(const std::string& run_name) {
+  std::string name;
+  std::size_t begin = 0;
+  while (begin <= run_name.size()) {
+    const std::size_t end = std::min(run_name.find('/', begin), run_name.size());
+    const std::string component = run_name.substr(begin, end - begin);
+    if (component.find(':') == std::string::npos) name += (name.empty() ? "" : "/") + component;
+    begin = end + 1;
+  }
+  return name;
+}
+
+}  // namespace
 
 std::optional<double> BenchResults::operator[](std::string_view name) const {
   const auto it = median.find(name);
@@ -32,7 +51,7 @@ std::optional<BenchResults> read_bench_results(const std::filesystem::path& file
   results.compiler = context.value("affinterp_compiler", "unknown");
   results.flags = context.value("affinterp_flags", "unknown");
   for (const auto& run : json["benchmarks"]) {
-    const std::string name = run.value("run_name", run.value("name", ""));
+    const std::string name = base_name(run.value("run_name", run.value("name", "")));
     if (run.value("error_occurred", false)) {
       results.errors[name] = run.value("error_message", "error");
       continue;

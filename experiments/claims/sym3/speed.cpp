@@ -1,10 +1,12 @@
 #include "experiments/claims/sym3/speed.hpp"
 
 #include "experiments/claims/sym3/bench_results.hpp"
+#include "experiments/sym3/demo_mesh.hpp"
 #include "plots/figure.hpp"
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 #include <variant>
 #include <string>
 #include <vector>
@@ -25,6 +27,11 @@ constexpr std::string_view kDirectDiag = "exp3/eigen-direct-diag";
 constexpr std::string_view kPade = "exp3/eigen-pade";
 constexpr std::string_view kAppDiag = "app/eigen-qr-diag";
 constexpr std::string_view kAppImprovedSd = "app/thesis-improved-sd";
+
+constexpr std::string_view kAboutReading =
+    "'about r×' = measured ratio within a factor 1.5 of r and above 1: the thesis measured on a 2013 Intel Core "
+    "i7 with MSVC 2010 /O2 and an older Eigen; CPU generation, compiler and library version move such ratios by "
+    "tens of percent, while a factor 1.5 still tells 3.2× from 2× or 5×";
 
 constexpr std::string_view kPaperMachine =
     "Intel Core i7 1.9 GHz, 4 GB RAM, Windows 8 (64 bit), Visual Studio 2010 /O2 (thesis §3.4)";
@@ -50,7 +57,12 @@ std::variant<BenchResults, Outcome> load(const RunContext& ctx, const std::strin
   const std::string run = "run build/bin/" + bench + " --benchmark_out=reports/bench/" + bench +
                           ".json --benchmark_out_format=json (experiments/reproduce.sh does)";
   if (ctx.bench_dir.empty()) return inconclusive("no benchmark folder given: " + run, method);
-  const auto results = read_bench_results(ctx.bench_dir / (bench + ".json"), counter);
+  std::optional<BenchResults> results;
+  try {
+    results = read_bench_results(ctx.bench_dir / (bench + ".json"), counter);
+  } catch (const std::runtime_error& e) {
+    return inconclusive(std::string("unreadable benchmark output: ") + e.what() + "; " + run, method);
+  }
   if (!results) return inconclusive((ctx.bench_dir / (bench + ".json")).string() + " is absent: " + run, method);
   return *results;
 }
@@ -102,6 +114,9 @@ std::vector<std::string> bar_chart(const RunContext& ctx, const BenchResults& re
                                  "set style fill solid 0.85 border -1\n"
                                  "set boxwidth 0.6\n"
                                  "set yrange [0:*]\n"
+                                 "set offsets 0, 0, graph 0.1, 0\n"
+                                 "set label 1 'orange: the algorithms the thesis compares' at graph 0.02, graph 0.95 "
+                                 "tc rgb '#d55e00'\n"
                                  "set xrange [-0.6:" + std::to_string(bars.size() - 0.4) + "]\n"
                                  "set bmargin 7\n"
                                  "plot $bars using 1:2:($3 > 0 ? 0xd55e00 : 0x0072b2) with boxes lc rgb variable, "
@@ -137,6 +152,7 @@ Outcome check_eig_speedup(const RunContext& ctx) {
       {"paper_ratio", paper},
       {"paper_machine", kPaperMachine},
       {"benchmarks", {kQr, kViete}},
+      {"about", kAboutReading},
       {"rule", "reproduced iff the measured ratio lies in [paper / 1.5, paper · 1.5] and exceeds 1"},
   };
   outcome.evidence.measurements = {
@@ -164,12 +180,15 @@ Outcome check_exp_speedup(const RunContext& ctx) {
   constexpr double paper = 4.2;
   const double diag = *results[kDiag], sd = *results[kSd], improved = *results[kImprovedSd];
   const double ratio = diag / improved;
-  const bool sd_between = improved < sd && sd < diag;
+  // "In between" must show beyond run-to-run noise: SD at least kMargin faster than Diag and slower than
+  // improved SD (medians of repeated runs on a shared machine moved by several percent between runs).
+  constexpr double kMargin = 1.05;
+  const bool sd_between = improved * kMargin < sd && sd * kMargin < diag;
   Outcome outcome;
   outcome.verdict = about(ratio, paper) && sd_between ? Verdict::reproduced : Verdict::not_reproduced;
   outcome.summary = "improved SD is " + fixed(ratio) + "× faster than Diag here (thesis: about " + fixed(paper, 1) +
                     "×; 'about' = within a factor " + fixed(kAboutFactor, 1) + "); plain SD " +
-                    (sd_between ? "lies" : "does not lie") + " in between (" + fixed(diag / sd) + "× faster than Diag)";
+                    (sd_between ? "lies" : "does not lie") + " in between (time of Diag / time of SD = " + fixed(diag / sd) + ")";
   outcome.evidence.method = method;
   outcome.evidence.sample_size = 4096;
   outcome.evidence.tolerance = kAboutFactor;
@@ -177,8 +196,12 @@ Outcome check_exp_speedup(const RunContext& ctx) {
       {"paper_ratio", paper},
       {"paper_machine", kPaperMachine},
       {"benchmarks", {kDiag, kSd, kImprovedSd}},
+      {"reading", "Diag = Eigen's QR-based SelfAdjointEigenSolver with eigenvectors (§3.1.1); plain SD = §3.1.2 on "
+                  "the eigenvalues of that solver (the thesis names no solver for SD; improved SD differs from it "
+                  "only by Viète's eigenvalues, §3.2)"},
+      {"about", kAboutReading},
       {"rule", "reproduced iff time(Diag)/time(improved SD) lies in [paper / 1.5, paper · 1.5] and exceeds 1, "
-               "and time(improved SD) < time(SD) < time(Diag)"},
+               "and time(improved SD) < time(SD) < time(Diag) with 5% to spare on each side (beyond run-to-run noise)"},
   };
   nlohmann::json ns = nlohmann::json::object();
   for (const auto& [name, value] : results.median)
@@ -221,7 +244,9 @@ Outcome check_app_speedup(const RunContext& ctx) {
   if (auto* outcome = std::get_if<Outcome>(&loaded)) return *outcome;
   const auto& results = std::get<BenchResults>(loaded);
   if (auto absent = missing(results, {kAppDiag, kAppImprovedSd}); !absent.empty())
-    return inconclusive("benchmarks missing from bench_app3.json: " + absent, method);
+    return inconclusive("benchmarks missing from bench_app3.json: " + absent + "; bench_app3 needs the CGAL demo data " +
+                            std::string(affinterp::sym3::cgal_demo_archive) + " (Debian package libcgal-demo)",
+                        method);
 
   constexpr double paper = 1.2;
   const double ratio = *results[kAppDiag] / *results[kAppImprovedSd];
@@ -241,6 +266,7 @@ Outcome check_app_speedup(const RunContext& ctx) {
       {"benchmarks", {kAppDiag, kAppImprovedSd}},
       {"reading", "the thesis's cage-based deformer is not available; the pipeline here swaps only the "
                   "per-triangle symmetric exponential, as the thesis did"},
+      {"about", kAboutReading},
       {"rule", "reproduced iff the measured ratio lies in [paper / 1.5, paper · 1.5] and exceeds 1"},
   };
   nlohmann::json ms = nlohmann::json::object();
