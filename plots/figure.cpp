@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <regex>
 #include <sstream>
 #include <stdexcept>
 
@@ -14,11 +15,14 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// The first line of gnuplot's diagnostics that reports an error, or "" (warnings pass).
+/// The first line of gnuplot's diagnostics that reports an error, or "" when there is none. gnuplot
+/// echoes the offending command, marks it with '^', then says "line N: <what>" (or "... error ...");
+/// warnings say "warning" and pass.
 std::string first_error_line(const fs::path& log) {
+  static const std::regex error(R"((line \d+:)|rror)");
   std::ifstream in(log);
   for (std::string line; std::getline(in, line);)
-    if (line.find("rror") != std::string::npos) return line;
+    if (std::regex_search(line, error) && line.find("arning") == std::string::npos) return line;
   return "";
 }
 

@@ -23,3 +23,14 @@ TEST(Figure, ReportsGnuplotErrors) {
   const fs::path stem = fs::temp_directory_path() / "affinterp_figure_bad";
   EXPECT_THROW(Figure(stem).script("plot $missing using 1:2").render(), std::runtime_error);
 }
+
+TEST(Figure, ReportsErrorsThatStillLeaveFilesBehind) {
+  // The first plot succeeds and writes the file; the second command is garbage.
+  const fs::path stem = fs::temp_directory_path() / "affinterp_figure_partial";
+  EXPECT_THROW(Figure(stem).script("plot x\nset nonsense_option 3").render(), std::runtime_error);
+}
+
+TEST(Figure, WarningsAreNotErrors) {
+  const fs::path stem = fs::temp_directory_path() / "affinterp_figure_warning";
+  EXPECT_NO_THROW(Figure(stem).script("plot [0:1] 1").render());  // "Warning: empty y range"
+}
