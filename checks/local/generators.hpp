@@ -74,7 +74,8 @@ inline rc::Gen<Mat2<double>> spd() {
 
 namespace Eigen {
 // Full precision when RapidCheck prints a counterexample.
-inline void showValue(const Matrix<double, 2, 2>& m, std::ostream& os) {
+template <class Scalar>
+void showValue(const Matrix<Scalar, 2, 2>& m, std::ostream& os) {
   os << std::setprecision(17) << "[[" << m(0, 0) << ", " << m(0, 1) << "], [" << m(1, 0) << ", " << m(1, 1) << "]]";
 }
 }  // namespace Eigen
