@@ -15,23 +15,24 @@ struct RegionPoint {
   bool property;   ///< the property holds (independent decision)
 };
 
-/// Draws the points to stem.png/.svg as coloured squares of `point_size`; returns the file names.
+/// Draws the points to stem.png/.svg as coloured cells of half-width `dx` and half-height `dy` (half the
+/// grid steps, so that the cells tile the plane); returns the file names.
 inline std::vector<std::string> draw_region_map(const std::filesystem::path& stem, const std::string& title,
                                                 const std::string& x_label, const std::string& y_label,
-                                                const std::vector<RegionPoint>& points, double point_size = 0.6) {
+                                                const std::vector<RegionPoint>& points, double dx, double dy) {
   Table table;
   for (const RegionPoint& p : points)
     table.push_back({p.x, p.y, static_cast<double>(p.condition ? (p.property ? 0 : 2) : (p.property ? 3 : 1))});
-  const std::string size = std::to_string(point_size);
+  const std::string cell = "(" + std::to_string(dx) + "):(" + std::to_string(dy) + ")";
   const auto layer = [&](int category, const std::string& colour, const std::string& label) {
-    return "$map using 1:($3 == " + std::to_string(category) + " ? $2 : 1/0) with points pt 5 ps " + size + " lc rgb '" +
-           colour + "' title '" + label + "'";
+    return "$map using 1:($3 == " + std::to_string(category) + " ? $2 : 1/0):" + cell +
+           " with boxxyerror fs solid 1.0 noborder lc rgb '" + colour + "' title '" + label + "'";
   };
   return Figure(stem)
-      .size(900, 720)
+      .size(1100, 720)
       .data("map", table)
       .script("set title '" + title + "'\nset xlabel '" + x_label + "'\nset ylabel '" + y_label +
-              "'\nset key outside bottom center horizontal maxrows 2 box opaque\n"
+              "'\nset key outside right center vertical box opaque\nset grid front\n"
               "plot " + layer(0, "#b8dcb0", "condition and property hold") + ", \\\n  " +
               layer(1, "#e6e6e6", "neither holds") + ", \\\n  " +
               layer(2, "#d7191c", "condition holds, property fails") + ", \\\n  " +

@@ -81,13 +81,14 @@ template <class Case, class Coordinates, class Condition>
 std::vector<std::string> draw_area_map(const RunContext& ctx, const std::string& name, const std::string& title,
                                        const std::string& x_label, const std::string& y_label,
                                        const std::vector<Case>& cases, Coordinates coordinates, Condition condition,
-                                       std::function<Mat2<Rational>(const Case&)> B_of) {
+                                       std::function<Mat2<Rational>(const Case&)> B_of, const Rational& step) {
   std::vector<plots::RegionPoint> points;
   for (const Case& c : cases) {
     const auto [x, y] = coordinates(c);
     points.push_back({x, y, condition(c), good_for_area(B_of(c))});
   }
-  plots::draw_region_map(ctx.figure_stem(name), title, x_label, y_label, points);
+  const double half_step = static_cast<double>(step) / 2;
+  plots::draw_region_map(ctx.figure_stem(name), title, x_label, y_label, points, half_step, half_step);
   return {RunContext::figure_ref(name + ".png"), RunContext::figure_ref(name + ".svg")};
 }
 
@@ -139,7 +140,7 @@ Outcome check_thm_2_2_1(const RunContext& ctx) {
         ctx, "thesis-thm-2.2.1-region", "Thm 2.2.1 (linear interpolation): printed condition vs good for area", "tr A", "det A",
         cases, [](const Mat2<Rational>& A) { return std::pair{static_cast<double>(A.trace()), static_cast<double>(det2(A))}; },
         [](const Mat2<Rational>& A) { return thm_2_2_1_condition<Rational>(A.trace(), det2(A)); },
-        [](const Mat2<Rational>& A) { return A; });
+        [](const Mat2<Rational>& A) { return A; }, step);
   return outcome;
 }
 
@@ -174,7 +175,7 @@ Outcome check_thm_2_2_2(const RunContext& ctx) {
         ctx, "thesis-thm-2.2.2-region", "Thm 2.2.2 (SVD interpolation): printed condition vs good for area", "x", "y", cases,
         [](const Case& c) { return std::pair{static_cast<double>(c.first), static_cast<double>(c.second)}; },
         [](const Case& c) { return thm_2_2_1_condition<Rational>(c.first + c.second, c.first * c.second); },
-        [](const Case& c) { return diagonal(c.first, c.second); });
+        [](const Case& c) { return diagonal(c.first, c.second); }, step);
   return outcome;
 }
 
@@ -214,7 +215,7 @@ Outcome check_thm_2_2_4(const RunContext& ctx) {
     outcome.figures = draw_area_map<Case>(
         ctx, "thesis-thm-2.2.4-region", "Thm 2.2.4 (polar interpolation), slice h = 1/2: printed condition vs good for area",
         "x", "y", slice, [](const Case& c) { return std::pair{static_cast<double>(std::get<0>(c)), static_cast<double>(std::get<1>(c))}; },
-        [&](const Case& c) { const auto S = S_of(c); return thm_2_2_1_condition<Rational>(S.trace(), det2(S)); }, S_of);
+        [&](const Case& c) { const auto S = S_of(c); return thm_2_2_1_condition<Rational>(S.trace(), det2(S)); }, S_of, step);
   }
   return outcome;
 }

@@ -94,7 +94,7 @@ Outcome check_thm_2_2_5(const RunContext& ctx) {
       if (std::get<2>(c) == Rational(1) / 2)
         points.push_back({static_cast<double>(std::get<0>(c)), static_cast<double>(std::get<1>(c)), condition(c), property(c)});
     plots::draw_region_map(ctx.figure_stem(name), "Thm 2.2.5 (polar interpolation), slice h = 1/2: printed condition vs good for norm",
-                           "x", "y", points);
+                           "x", "y", points, static_cast<double>(step) / 2, static_cast<double>(step) / 2);
     outcome.figures = figure_files(name);
   }
   return outcome;
@@ -205,7 +205,7 @@ Outcome check_thm_2_2_3(const RunContext& ctx) {
     }
     const std::string name = "thesis-thm-2.2.3-region";
     plots::draw_region_map(ctx.figure_stem(name), "Thm 2.2.3 (SVD interpolation): printed condition vs good for norm for every sampled beta",
-                           "x", "y", points, 1.2);
+                           "x", "y", points, 0.5 / per_unit, 0.5 / per_unit);
     outcome.figures = figure_files(name);
   }
   return outcome;
