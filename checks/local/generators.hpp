@@ -9,6 +9,7 @@
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <numbers>
@@ -68,6 +69,25 @@ inline rc::Gen<Mat2<double>> spd() {
     S(0, 1) = S(1, 0) = (S(0, 1) + S(1, 0)) / 2;
     return S;
   });
+}
+
+/// A non-degenerate triangle: vertices in [−1, 1]² shifted by up to 3, times 10^k (|k| ≤ 4), with
+/// area at least 1e-3 of its squared diameter (so that eq. (1) is well conditioned).
+inline rc::Gen<Triangle<double>> triangle() {
+  return rc::gen::map(
+      rc::gen::tuple(rc::gen::container<std::vector<double>>(6, uniform(-1, 1)), rc::gen::inRange(-4, 5), uniform(-3, 3)),
+      [](const std::tuple<std::vector<double>, int, double>& p) {
+        const auto& [coordinates, exponent, shift] = p;
+        Triangle<double> T;
+        for (int k = 0; k < 6; ++k) T(k % 2, k / 2) = (coordinates[k] + shift) * std::pow(10.0, exponent);
+        return T;
+      });
+}
+
+inline double area_ratio(const Triangle<double>& T) {
+  const Eigen::Vector2d e1 = T.col(1) - T.col(0), e2 = T.col(2) - T.col(0), e3 = T.col(2) - T.col(1);
+  const double diameter2 = std::max({e1.squaredNorm(), e2.squaredNorm(), e3.squaredNorm()});
+  return std::abs(e1.x() * e2.y() - e1.y() * e2.x()) / diameter2;
 }
 
 }  // namespace affinterp::local::testing

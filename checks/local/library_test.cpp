@@ -32,6 +32,20 @@ TEST(AffineMap, RejectsADegenerateSource) {
   EXPECT_THROW(affine_map(p, q), std::invalid_argument);
 }
 
+RC_GTEST_PROP(AffineMap, MapsAdversarialTrianglesInDouble, ()) {
+  const Triangle<double> p = *testing::triangle(), q = *testing::triangle();
+  RC_PRE(testing::area_ratio(p) > 1e-3);
+  const AffineMap<double> map = affine_map(p, q);
+  // Rounding in H(p)⁻¹ grows with how far p lies from the origin compared with its size.
+  const double reach = p.cwiseAbs().maxCoeff(), size2 = testing::area_ratio(p) * (p.col(1) - p.col(0)).squaredNorm();
+  const double tolerance = 1e-12 * (map.A.norm() * reach + map.d.norm() + q.norm()) * (1 + reach * reach / size2);
+  for (int k = 0; k < 3; ++k) RC_ASSERT((map.A * p.col(k) + map.d - q.col(k)).norm() <= tolerance);
+  const double row_tolerance = 1e-12 * (1 + reach * reach / size2);
+  RC_ASSERT(std::abs(map.A_hat(2, 0)) * reach <= row_tolerance);  // entries of units 1/length
+  RC_ASSERT(std::abs(map.A_hat(2, 1)) * reach <= row_tolerance);
+  RC_ASSERT(std::abs(map.A_hat(2, 2) - 1) <= row_tolerance);
+}
+
 TEST(PrincipalAngle, LiesInTheHalfOpenInterval) {
   EXPECT_DOUBLE_EQ(principal_angle(pi), pi);
   EXPECT_DOUBLE_EQ(principal_angle(-pi), pi);

@@ -78,7 +78,7 @@ Outcome check_exp_det_positive(const RunContext& ctx) {
   // cancellation in ad − bc below 10^10 of the 50 digits.
   const std::uint64_t seed = ctx.seed_for("kaji.exp.det-positive");
   Rng rng(seed);
-  const int samples = ctx.pick(50, 1000), times = ctx.pick(21, 201);
+  const int samples = ctx.pick(50, 400), times = ctx.pick(21, 101);
   Real50 worst = 0, smallest = 1;
   std::uint64_t non_positive = 0;
   for (int i = 0; i < samples; ++i) {
@@ -114,7 +114,7 @@ Outcome check_exp_det_monotone(const RunContext& ctx) {
   // and the central difference must match log(λ1λ2)(λ1λ2)^t.
   const std::uint64_t seed = ctx.seed_for("kaji.exp.det-monotone");
   Rng rng(seed);
-  const int samples = ctx.pick(50, 1000), times = ctx.pick(21, 201);
+  const int samples = ctx.pick(50, 300), times = ctx.pick(21, 61);
   const Real50 h("1e-15");
   Real50 worst_constant = 0, worst_derivative = 0;
   std::uint64_t wrong_direction = 0;
