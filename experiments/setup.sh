@@ -11,6 +11,7 @@ packages=(
   libgnuplot-iostream-dev gnuplot-nox fonts-dejavu-core imagemagick
   nlohmann-json3-dev libcli11-dev libsuitesparse-dev
   libcgal-dev libcgal-demo libxsimd-dev
+  clang libclang-rt-14-dev
 )
 missing=()
 for p in "${packages[@]}"; do

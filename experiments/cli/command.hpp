@@ -17,5 +17,6 @@ struct CommandFailed : std::runtime_error {
 inline constexpr int usage_error = 2;
 
 void add_claims_command(CLI::App& app);
+void add_shapes_command(CLI::App& app);
 
 }  // namespace affinterp::cli

@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
       "affinterp"};
   app.require_subcommand(1);
   add_claims_command(app);
+  add_shapes_command(app);
 
   try {
     app.parse(argc, argv);
