@@ -6,6 +6,12 @@ namespace affinterp::claims {
 namespace {
 
 const std::vector<Pin> pins = {
+    {"kaji.er.closed-form", Verdict::confirmed},
+    {"kaji.er.positive-definite", Verdict::refuted},
+    {"kaji.er.similarity-invariant", Verdict::confirmed},
+    {"kaji.ef.translation-invariant", Verdict::confirmed},
+    {"kaji.acol.constraint", Verdict::corrected},
+    {"kaji.global.G-time-independent", Verdict::refuted},
 };
 
 }  // namespace

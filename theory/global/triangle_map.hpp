@@ -19,7 +19,8 @@ Eigen::Matrix<Scalar, 3, 2> linear_part_operator(const Corners<Scalar>& p) {
   edges.col(1) = p.col(2) - p.col(0);
   Eigen::Matrix<Scalar, 3, 2> difference;
   difference << Scalar(-1), Scalar(-1), Scalar(1), Scalar(0), Scalar(0), Scalar(1);
-  return difference * edges.inverse();
+  const Eigen::Matrix<Scalar, 2, 2> inverse = edges.inverse();
+  return difference.lazyProduct(inverse);  // lazyProduct: Eigen's product evaluator rejects cpp_rational
 }
 
 /// M with vec(B) = M x for x = (v_0x, v_0y, v_1x, v_1y, v_2x, v_2y) and vec column-major: M = Dᵀ ⊗ I₂.
@@ -36,7 +37,7 @@ Eigen::Matrix<Scalar, 4, 6> vectorised_linear_part_operator(const Corners<Scalar
 /// The linear part of the affine map sending the corners p to the corners q (eq. (1)).
 template <class Scalar>
 Eigen::Matrix<Scalar, 2, 2> linear_part(const Corners<Scalar>& p, const Corners<Scalar>& q) {
-  return q * linear_part_operator(p);
+  return q.lazyProduct(linear_part_operator(p));
 }
 
 /// Column-major vec of a 2×2 matrix.
