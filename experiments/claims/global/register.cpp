@@ -6,6 +6,8 @@ void register_global_checks(CheckRegistry& registry) {
   register_similarity_error_checks(registry);
   register_quadratic_form_checks(registry);
   register_acol_constraint_check(registry);
+  register_figure_checks(registry);
+  register_symmetrization_check(registry);
 }
 
 }  // namespace affinterp::claims
