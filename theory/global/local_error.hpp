@@ -65,23 +65,32 @@ struct TriangleQuadratic {
   TriangleQuadratic operator*(const Scalar& w) const { return {local::scaled(w, H), local::scaled(w, g), c * w}; }
 };
 
-/// The linear part g = −2 Mᵀ vec A of E^F below: all that changes with t when E^F's G does not.
+/// The operator D of B = V D (triangle_map.hpp) for one triangle.
 template <class Scalar>
-Eigen::Matrix<Scalar, 6, 1> frobenius_linear_term(const Eigen::Matrix<Scalar, 4, 6>& M, const Mat2<Scalar>& A) {
-  return local::scaled(Scalar(-2), M.transpose().lazyProduct(vec(A)));
+using LinearPartOperator = Eigen::Matrix<Scalar, 3, 2>;
+
+/// The linear part g = −2 Mᵀ vec A of E^F below, computed as g_k = −2 A D_kᵀ (D_k the k-th row of D): all
+/// that changes with t when E^F's G does not.
+template <class Scalar>
+Eigen::Matrix<Scalar, 6, 1> frobenius_linear_term(const LinearPartOperator<Scalar>& D, const Mat2<Scalar>& A) {
+  const Eigen::Matrix<Scalar, 2, 3> ADt = A.lazyProduct(D.transpose());
+  Eigen::Matrix<Scalar, 6, 1> g;
+  for (int k = 0; k < 6; ++k) g[k] = Scalar(-2) * ADt.data()[k];
+  return g;
 }
 
-/// E^F(A, B(x)) with vec B = M x (M from vectorised_linear_part_operator): H = MᵀM, g = −2 Mᵀ vec A,
-/// c = ‖A‖².
+/// E^F(A, B(x)) with vec B = M x, M = Dᵀ ⊗ I₂: H = MᵀM, g = −2 Mᵀ vec A, c = ‖A‖².
 template <class Scalar>
-TriangleQuadratic<Scalar> frobenius_quadratic(const Eigen::Matrix<Scalar, 4, 6>& M, const Mat2<Scalar>& A) {
-  return {M.transpose().lazyProduct(M), frobenius_linear_term(M, A), A.squaredNorm()};
+TriangleQuadratic<Scalar> frobenius_quadratic(const LinearPartOperator<Scalar>& D, const Mat2<Scalar>& A) {
+  const Eigen::Matrix<Scalar, 4, 6> M = vectorised_linear_part_operator(D);
+  return {M.transpose().lazyProduct(M), frobenius_linear_term(D, A), A.squaredNorm()};
 }
 
 /// E^R(A, B(x)) = ‖B‖² − (⟨A, B⟩² + ⟨JA, B⟩²)/‖A‖²: H = MᵀM − (m_a m_aᵀ + m_j m_jᵀ)/‖A‖² with
 /// m_a = Mᵀ vec A, m_j = Mᵀ vec JA; no linear or constant part.
 template <class Scalar>
-TriangleQuadratic<Scalar> similarity_quadratic(const Eigen::Matrix<Scalar, 4, 6>& M, const Mat2<Scalar>& A) {
+TriangleQuadratic<Scalar> similarity_quadratic(const LinearPartOperator<Scalar>& D, const Mat2<Scalar>& A) {
+  const Eigen::Matrix<Scalar, 4, 6> M = vectorised_linear_part_operator(D);
   const Eigen::Matrix<Scalar, 6, 1> m_a = M.transpose().lazyProduct(vec(A));
   const Eigen::Matrix<Scalar, 6, 1> m_j = M.transpose().lazyProduct(vec<Scalar>(rotation_J<Scalar>().lazyProduct(A)));
   const Eigen::Matrix<Scalar, 6, 6> projected = m_a.lazyProduct(m_a.transpose()) + m_j.lazyProduct(m_j.transpose());
@@ -92,10 +101,10 @@ TriangleQuadratic<Scalar> similarity_quadratic(const Eigen::Matrix<Scalar, 4, 6>
 
 /// w E^F + (1 − w) E^R ("Improvements").
 template <class Scalar>
-TriangleQuadratic<Scalar> blend_quadratic(const Eigen::Matrix<Scalar, 4, 6>& M, const Mat2<Scalar>& A,
+TriangleQuadratic<Scalar> blend_quadratic(const LinearPartOperator<Scalar>& D, const Mat2<Scalar>& A,
                                           const Scalar& w) {
-  TriangleQuadratic<Scalar> q = frobenius_quadratic(M, A) * w;
-  q += similarity_quadratic(M, A) * (Scalar(1) - w);
+  TriangleQuadratic<Scalar> q = frobenius_quadratic(D, A) * w;
+  q += similarity_quadratic(D, A) * (Scalar(1) - w);
   return q;
 }
 

@@ -25,8 +25,7 @@ Eigen::Matrix<Scalar, 3, 2> linear_part_operator(const Corners<Scalar>& p) {
 
 /// M with vec(B) = M x for x = (v_0x, v_0y, v_1x, v_1y, v_2x, v_2y) and vec column-major: M = Dᵀ ⊗ I₂.
 template <class Scalar>
-Eigen::Matrix<Scalar, 4, 6> vectorised_linear_part_operator(const Corners<Scalar>& p) {
-  const Eigen::Matrix<Scalar, 3, 2> D = linear_part_operator(p);
+Eigen::Matrix<Scalar, 4, 6> vectorised_linear_part_operator(const Eigen::Matrix<Scalar, 3, 2>& D) {
   Eigen::Matrix<Scalar, 4, 6> M = Eigen::Matrix<Scalar, 4, 6>::Zero();
   for (int column = 0; column < 2; ++column)
     for (int k = 0; k < 3; ++k)

@@ -73,12 +73,12 @@ ExactQuadratic assemble(const RationalMeshPair& mesh, global::Energy energy, con
   const Eigen::Index n = mesh.vertex_count();
   ExactQuadratic form{MatQ::Zero(2 * n, 2 * n), VecQ::Zero(2 * n)};
   auto add = [&](const global::Corners<Rational>& reference, const Mat2Q& Ai, Eigen::Index i) {
-    const Eigen::Matrix<Rational, 4, 6> M = global::vectorised_linear_part_operator(reference);
+    const global::LinearPartOperator<Rational> D = global::linear_part_operator(reference);
     global::TriangleQuadratic<Rational> q;
     switch (energy) {
-      case global::Energy::frobenius: q = global::frobenius_quadratic(M, Ai); break;
-      case global::Energy::similarity: q = global::similarity_quadratic(M, Ai); break;
-      case global::Energy::blend: q = global::blend_quadratic(M, Ai, w); break;
+      case global::Energy::frobenius: q = global::frobenius_quadratic(D, Ai); break;
+      case global::Energy::similarity: q = global::similarity_quadratic(D, Ai); break;
+      case global::Energy::blend: q = global::blend_quadratic(D, Ai, w); break;
       case global::Energy::procrustes: q = global::procrustes_quadratic(reference, Ai); break;
     }
     for (int a = 0; a < 3; ++a)
