@@ -162,6 +162,7 @@ void run(const InterpolateOptions& o) {
     if (o.figures) drawn.push_back({frame.vertices, time_label(t)});
     if (progress) progress->advance();
   }
+  progress.reset();  // ends the progress line before any other message
 
   nlohmann::json document = {
       {"source", o.source},
@@ -181,7 +182,7 @@ void run(const InterpolateOptions& o) {
   if (o.figures) {
     std::vector<plots::MeshFrame> strip;
     const std::size_t n = drawn.size(), shown = std::min(n, filmstrip_frames);
-    for (std::size_t j = 0; j < shown; ++j) strip.push_back(drawn[j * (n - 1) / (shown - 1)]);
+    for (std::size_t j = 0; j < shown; ++j) strip.push_back(drawn[(2 * j * (n - 1) + shown - 1) / (2 * (shown - 1))]);
     plots::draw_filmstrip(staged.staging() / "filmstrip", pair.source.triangles, strip,
                           fs::path(o.source).filename().string() + " -> " + fs::path(o.target).filename().string() +
                               " (" + o.local + ", E^" + o.energy + ")");
