@@ -1,5 +1,6 @@
 // Reading and writing OBJ/OFF meshes: the accepted subset, and a one-line error naming the file and the
 // line for each kind of bad input.
+#include "checks/global/shared_meshes.hpp"
 #include "experiments/io/mesh_file.hpp"
 
 #include <gtest/gtest.h>
@@ -101,11 +102,10 @@ TEST(MeshFile, ChoosesTheFormatByExtensionAndNamesMissingFiles) {
 }
 
 TEST(MeshFile, ReadsTheSharedMeshesWhenPresent) {
-  const fs::path folder = AFFINTERP_SOURCE_DIR "/../shared/data/meshes";
-  const fs::path shared = fs::exists(folder) ? folder : fs::path("/work/shared/data/meshes");
-  if (!fs::exists(shared)) GTEST_SKIP() << "skipped: ../shared not present";
-  EXPECT_EQ(io::read_mesh(shared / "man0.obj").triangle_count(), 332);
-  EXPECT_EQ(io::read_mesh(shared / "arm.obj").vertex_count(), 4206);
+  const auto shared = checks::shared_meshes();
+  if (!shared) GTEST_SKIP() << "skipped: ../shared not present";
+  EXPECT_EQ(io::read_mesh(*shared / "man0.obj").triangle_count(), 332);
+  EXPECT_EQ(io::read_mesh(*shared / "arm.obj").vertex_count(), 4206);
 }
 
 }  // namespace

@@ -18,5 +18,6 @@ inline constexpr int usage_error = 2;
 
 void add_claims_command(CLI::App& app);
 void add_shapes_command(CLI::App& app);
+void add_interpolate_command(CLI::App& app);
 
 }  // namespace affinterp::cli

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   add_claims_command(app);
   add_shapes_command(app);
+  add_interpolate_command(app);
 
   try {
     app.parse(argc, argv);
