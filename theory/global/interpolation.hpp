@@ -121,7 +121,8 @@ class Interpolation {
   Interpolation(Interpolation&&) noexcept;
   Interpolation& operator=(Interpolation&&) noexcept;
 
-  /// v_1(t) … v_n(t), column k = v_k(t). Throws std::out_of_range outside [t_begin, t_end].
+  /// v_1(t) … v_n(t), column k = v_k(t). Throws std::out_of_range outside [t_begin, t_end]. When G depends
+  /// on t the factorisation is redone in place: do not call concurrently on one object.
   Eigen::Matrix2Xd vertices_at(double t) const;
 
   /// The quadratic form minimised at time t (dense; for tests and claims on small meshes).
