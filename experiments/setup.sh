@@ -12,6 +12,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libsuitesparse-dev
   libcgal-dev libcgal-demo libxsimd-dev
   libginac-dev
+  clang libclang-rt-14-dev
 )
 missing=()
 for p in "${packages[@]}"; do

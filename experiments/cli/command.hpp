@@ -20,5 +20,7 @@ void add_claims_command(CLI::App& app);
 void add_report_command(CLI::App& app);
 void add_exp3_command(CLI::App& app);
 void add_eig3_command(CLI::App& app);
+void add_shapes_command(CLI::App& app);
+void add_interpolate_command(CLI::App& app);
 
 }  // namespace affinterp::cli

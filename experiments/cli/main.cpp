@@ -14,6 +14,8 @@ int main(int argc, char** argv) {
   add_report_command(app);
   add_exp3_command(app);
   add_eig3_command(app);
+  add_shapes_command(app);
+  add_interpolate_command(app);
 
   try {
     app.parse(argc, argv);

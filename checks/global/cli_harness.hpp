@@ -1,0 +1,36 @@
+#pragma once
+// Running the affinterp executable from a test: its exit status and standard error.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace affinterp::checks {
+
+struct CliResult {
+  int status;
+  std::string error;  ///< standard error
+};
+
+/// Runs `affinterp ARGS` (ARGS as shell words) with standard output discarded.
+inline CliResult run_cli(const std::string& args) {
+  const std::filesystem::path err =
+      std::filesystem::temp_directory_path() / ("affinterp_cli_" + std::to_string(getpid()) + ".err");
+  const std::string command = std::string(AFFINTERP_CLI) + " " + args + " >/dev/null 2>'" + err.string() + "'";
+  const int raw = std::system(command.c_str());
+  std::ifstream in(err);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::filesystem::remove(err);
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), text.str()};
+}
+
+/// True when `text` is exactly one line.
+inline bool one_line(const std::string& text) {
+  return !text.empty() && text.find('\n') == text.size() - 1;
+}
+
+}  // namespace affinterp::checks

@@ -1,0 +1,203 @@
+#include "theory/global/frame_assembly.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace affinterp::global {
+namespace {
+
+Corners<double> corners_of(const Mesh& mesh, Eigen::Index i) {
+  Corners<double> p;
+  for (int c = 0; c < 3; ++c) p.col(c) = mesh.corner(i, c);
+  return p;
+}
+
+std::vector<TriangleTerm> triangle_terms(const Mesh& reference, const InterpolationOptions& options) {
+  std::vector<TriangleTerm> terms;
+  terms.reserve(static_cast<std::size_t>(reference.triangle_count()));
+  for (Eigen::Index i = 0; i < reference.triangle_count(); ++i) {
+    TriangleTerm term;
+    for (int c = 0; c < 3; ++c) term.vertex[static_cast<std::size_t>(c)] = reference.triangles(c, i);
+    term.corners = corners_of(reference, i);
+    term.D = linear_part_operator(term.corners);
+    term.weight = options.area_weighted ? std::abs(reference.doubled_signed_area(i)) / 2 : 1.0;
+    if (options.energy == Energy::blend)
+      term.frobenius_share = options.blend_weights.size() > 0 ? options.blend_weights[i] : options.blend_weight;
+    terms.push_back(term);
+  }
+  return terms;
+}
+
+/// E_i(A, B(x)) of one term, times its weight.
+TriangleQuadratic<double> local_error(Energy energy, const TriangleTerm& term, const Eigen::Matrix2d& A) {
+  switch (energy) {
+    case Energy::frobenius: return frobenius_quadratic(term.D, A) * term.weight;
+    case Energy::similarity: return similarity_quadratic(term.D, A) * term.weight;
+    case Energy::blend: return blend_quadratic(term.D, A, term.frobenius_share) * term.weight;
+    case Energy::procrustes: return procrustes_quadratic(term.corners, A) * term.weight;
+  }
+  return {};
+}
+
+/// The linear term of E_i: only E^F's share has one (E^R and E^S are pure quadratic forms).
+Eigen::Matrix<double, 6, 1> local_error_linear_term(Energy energy, const TriangleTerm& term, const Eigen::Matrix2d& A) {
+  if (energy == Energy::frobenius || energy == Energy::blend)
+    return frobenius_linear_term(term.D, A) * (term.weight * term.frobenius_share);
+  return Eigen::Matrix<double, 6, 1>::Zero();
+}
+
+}  // namespace
+
+FrameAssembly::FrameAssembly(const Mesh& source, const Mesh& target, const InterpolationOptions& options,
+                             const LocalPaths& forward, const LocalPaths* reverse,
+                             std::vector<ConstraintTerm> constraints)
+    : energy_(options.energy),
+      n_(source.vertex_count()),
+      forward_(forward),
+      reverse_(reverse),
+      forward_terms_(triangle_terms(source, options)),
+      constraints_(std::move(constraints)) {
+  if (reverse_) reverse_terms_ = triangle_terms(target, options);
+  isotropic_ = energy_ == Energy::frobenius ||
+               (energy_ == Energy::blend &&
+                std::all_of(forward_terms_.begin(), forward_terms_.end(),
+                            [](const TriangleTerm& term) { return term.frobenius_share == 1.0; }));
+  build_pattern();
+}
+
+TriangleQuadratic<double> FrameAssembly::triangle_quadratic(Eigen::Index i, double t) const {
+  const auto k = static_cast<std::size_t>(i);
+  TriangleQuadratic<double> q = local_error(energy_, forward_terms_[k], forward_.at(i, t));
+  if (reverse_) q += local_error(energy_, reverse_terms_[k], reverse_->at(i, 1 - t));  // E^{-1}(1 − t)
+  return q;
+}
+
+void FrameAssembly::build_pattern() {
+  const int d = isotropic_ ? 1 : 2;  // unknowns per vertex in the assembled matrix
+  const Eigen::Index size = d * n_;
+  std::vector<Eigen::Triplet<double>> entries;
+  auto lower = [&](Eigen::Index row, Eigen::Index col) {
+    if (row >= col) entries.emplace_back(row, col, 0.0);
+  };
+  for (const TriangleTerm& term : forward_terms_)
+    for (int a = 0; a < 3 * d; ++a)
+      for (int b = 0; b < 3 * d; ++b)
+        lower(d * term.vertex[static_cast<std::size_t>(a / d)] + a % d, d * term.vertex[static_cast<std::size_t>(b / d)] + b % d);
+  for (const ConstraintTerm& term : constraints_)
+    if (!term.dense())
+      for (const auto& [k, alpha_k] : term.coefficients)
+        for (const auto& [l, alpha_l] : term.coefficients)
+          for (int r = 0; r < d; ++r) lower(d * k + r, d * l + r);
+  matrix_.resize(size, size);
+  matrix_.setFromTriplets(entries.begin(), entries.end());
+  matrix_.makeCompressed();
+
+  auto slot = [&](Eigen::Index row, Eigen::Index col) -> int {
+    const int* begin = matrix_.innerIndexPtr() + matrix_.outerIndexPtr()[col];
+    const int* end = matrix_.innerIndexPtr() + matrix_.outerIndexPtr()[col + 1];
+    return static_cast<int>(std::lower_bound(begin, end, static_cast<int>(row)) - matrix_.innerIndexPtr());
+  };
+  triangle_slots_.assign(36 * forward_terms_.size(), -1);
+  for (std::size_t i = 0; i < forward_terms_.size(); ++i)
+    for (int a = 0; a < 3 * d; ++a)
+      for (int b = 0; b < 3 * d; ++b) {
+        const Eigen::Index row = d * forward_terms_[i].vertex[static_cast<std::size_t>(a / d)] + a % d;
+        const Eigen::Index col = d * forward_terms_[i].vertex[static_cast<std::size_t>(b / d)] + b % d;
+        if (row >= col) triangle_slots_[36 * i + static_cast<std::size_t>(6 * a + b)] = slot(row, col);
+      }
+
+  constant_values_.assign(static_cast<std::size_t>(matrix_.nonZeros()), 0.0);
+  for (const ConstraintTerm& term : constraints_)
+    if (!term.dense())
+      for (const auto& [k, alpha_k] : term.coefficients)
+        for (const auto& [l, alpha_l] : term.coefficients)
+          for (int r = 0; r < d; ++r)
+            if (k >= l) constant_values_[static_cast<std::size_t>(slot(d * k + r, d * l + r))] += term.weight * alpha_k * alpha_l;
+
+  // A dense term c ‖Σ α_k v_k − r‖² (the barycentre) is c (α αᵀ ⊗ I₂): columns α ⊗ e_r of U. K is
+  // grounded at vertex 0 (+g on its diagonal, −g in U diag(c) Uᵀ) so that K stays definite even when the
+  // dense term is the only one fixing translation.
+  std::vector<Eigen::VectorXd> columns;
+  std::vector<double> weights;
+  for (const ConstraintTerm& term : constraints_)
+    if (term.dense())
+      for (int r = 0; r < d; ++r) {
+        Eigen::VectorXd column = Eigen::VectorXd::Zero(size);
+        for (const auto& [k, alpha_k] : term.coefficients) column[d * k + r] = alpha_k;
+        columns.push_back(column), weights.push_back(term.weight);
+      }
+  if (!columns.empty()) {
+    double grounding = 0;  // comparable to a triangle's diagonal entries
+    for (const TriangleTerm& term : forward_terms_) grounding += 2 * term.weight * term.D.squaredNorm();  // tr MᵀM
+    grounding /= static_cast<double>(size);
+    for (int r = 0; r < d; ++r) {
+      constant_values_[static_cast<std::size_t>(slot(r, r))] += grounding;
+      columns.push_back(Eigen::VectorXd::Unit(size, r)), weights.push_back(-grounding);
+    }
+  }
+  U_.resize(size, static_cast<Eigen::Index>(columns.size()));
+  for (std::size_t j = 0; j < columns.size(); ++j) U_.col(static_cast<Eigen::Index>(j)) = columns[j];
+  c_ = Eigen::Map<const Eigen::VectorXd>(weights.data(), static_cast<Eigen::Index>(weights.size()));
+}
+
+const FrameAssembly::SparseMatrix& FrameAssembly::matrix_at(double t) {
+  if (isotropic_ && assembled_once_) return matrix_;  // G = L ⊗ I₂ does not involve A_i(t)
+  Eigen::Map<Eigen::VectorXd> values(matrix_.valuePtr(), matrix_.nonZeros());
+  values = Eigen::Map<const Eigen::VectorXd>(constant_values_.data(), matrix_.nonZeros());
+  const int d = isotropic_ ? 1 : 2;
+  const int stride = 2 / d;  // isotropic: L's entries are H's x-x entries
+  for (std::size_t i = 0; i < forward_terms_.size(); ++i) {
+    const TriangleQuadratic<double> q = triangle_quadratic(static_cast<Eigen::Index>(i), t);
+    const int* slots = triangle_slots_.data() + 36 * i;
+    for (int a = 0; a < 3 * d; ++a)
+      for (int b = 0; b < 3 * d; ++b)
+        if (const int s = slots[6 * a + b]; s >= 0) values[s] += q.H(stride * a, stride * b);
+  }
+  assembled_once_ = true;
+  return matrix_;
+}
+
+Eigen::MatrixXd FrameAssembly::right_hand_side_at(double t) const {
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(2 * n_);
+  auto add = [&](const std::vector<TriangleTerm>& terms, const LocalPaths& paths, double s) {
+    for (std::size_t i = 0; i < terms.size(); ++i) {
+      const Eigen::Matrix<double, 6, 1> g = local_error_linear_term(energy_, terms[i], paths.at(static_cast<Eigen::Index>(i), s));
+      for (int c = 0; c < 3; ++c) u.segment<2>(2 * terms[i].vertex[static_cast<std::size_t>(c)]) += g.segment<2>(2 * c);
+    }
+  };
+  add(forward_terms_, forward_, t);
+  if (reverse_) add(reverse_terms_, *reverse_, 1 - t);
+  for (const ConstraintTerm& term : constraints_) {  // c ‖Σ α_k v_k − r‖²: linear part −2 c α_k r
+    const Eigen::Vector2d r = term.target(t);
+    for (const auto& [k, alpha_k] : term.coefficients) u.segment<2>(2 * k) -= 2 * term.weight * alpha_k * r;
+  }
+  u *= -0.5;
+  if (!isotropic_) return u;
+  return Eigen::Map<const Eigen::MatrixXd>(u.data(), 2, n_).transpose();
+}
+
+FrameQuadratic FrameAssembly::dense_quadratic_at(double t) const {
+  FrameQuadratic form{Eigen::MatrixXd::Zero(2 * n_, 2 * n_), Eigen::VectorXd::Zero(2 * n_), 0.0};
+  for (std::size_t i = 0; i < forward_terms_.size(); ++i) {
+    const TriangleQuadratic<double> q = triangle_quadratic(static_cast<Eigen::Index>(i), t);
+    const auto& vertex = forward_terms_[i].vertex;
+    for (int a = 0; a < 3; ++a) {
+      form.u.segment<2>(2 * vertex[static_cast<std::size_t>(a)]) += q.g.segment<2>(2 * a);
+      for (int b = 0; b < 3; ++b)
+        form.G.block<2, 2>(2 * vertex[static_cast<std::size_t>(a)], 2 * vertex[static_cast<std::size_t>(b)]) += q.H.block<2, 2>(2 * a, 2 * b);
+    }
+    form.c += q.c;
+  }
+  for (const ConstraintTerm& term : constraints_) {
+    const Eigen::Vector2d r = term.target(t);
+    for (const auto& [k, alpha_k] : term.coefficients) {
+      form.u.segment<2>(2 * k) -= 2 * term.weight * alpha_k * r;
+      for (const auto& [l, alpha_l] : term.coefficients)
+        form.G.block<2, 2>(2 * k, 2 * l) += term.weight * alpha_k * alpha_l * Eigen::Matrix2d::Identity();
+    }
+    form.c += term.weight * r.squaredNorm();
+  }
+  return form;
+}
+
+}  // namespace affinterp::global
