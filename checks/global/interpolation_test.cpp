@@ -2,6 +2,7 @@
 // branch choice and its refusals.
 #include "checks/global/strip.hpp"
 #include "theory/global/interpolation.hpp"
+#include "theory/global/local_paths.hpp"
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
@@ -123,6 +124,28 @@ RC_GTEST_PROP(Interpolation, RandomTargetsMatchDenseMinimiser, ()) {
   const Interpolation interpolation(P, Q, with(energy, two_pins(0, P.vertex_count() - 1)));
   const double t = *rc::gen::inRange(0, 11) / 10.0;
   RC_ASSERT((interpolation.vertices_at(t) - dense_minimiser(interpolation, t)).cwiseAbs().maxCoeff() < 1e-8);
+}
+
+}  // namespace
+}  // namespace affinterp::global
+
+namespace affinterp::global {
+namespace {
+
+TEST(LocalPaths, ExpMatchesTheLocalTheorysHomotopyOnEveryBranch) {
+  const std::vector<Eigen::Matrix2d> A = {(Eigen::Matrix2d() << 2, 1, -0.5, 0.7).finished(),
+                                          (Eigen::Matrix2d() << -1, -0.2, 0.3, -2).finished(), Eigen::Matrix2d::Identity()};
+  for (const double k : {-1.0, 0.0, 2.0}) {
+    Eigen::VectorXd theta(3);
+    for (int i = 0; i < 3; ++i) theta[i] = principal_polar_angle(A[static_cast<std::size_t>(i)]) + 2 * std::numbers::pi * k;
+    const LocalPaths paths(A, LocalHomotopy::exp, theta);
+    for (int i = 0; i < 3; ++i) {
+      const local::Polar<double> polar = local::polar_decomposition<double>(A[static_cast<std::size_t>(i)]);
+      const local::ExpLogHomotopy<double> reference(theta[i], polar.S);
+      for (const double t : {-0.5, 0.0, 0.3, 1.0, 1.7})
+        EXPECT_LT((paths.at(i, t) - reference(t)).cwiseAbs().maxCoeff(), 1e-12) << "i " << i << " t " << t << " k " << k;
+    }
+  }
 }
 
 }  // namespace

@@ -19,7 +19,7 @@ std::vector<TriangleTerm> triangle_terms(const Mesh& reference, const Interpolat
     TriangleTerm term;
     for (int c = 0; c < 3; ++c) term.vertex[static_cast<std::size_t>(c)] = reference.triangles(c, i);
     term.corners = corners_of(reference, i);
-    term.M = vectorised_linear_part_operator(term.corners);
+    term.D = linear_part_operator(term.corners);
     term.weight = options.area_weighted ? std::abs(reference.doubled_signed_area(i)) / 2 : 1.0;
     if (options.energy == Energy::blend)
       term.frobenius_share = options.blend_weights.size() > 0 ? options.blend_weights[i] : options.blend_weight;
@@ -31,9 +31,9 @@ std::vector<TriangleTerm> triangle_terms(const Mesh& reference, const Interpolat
 /// E_i(A, B(x)) of one term, times its weight.
 TriangleQuadratic<double> local_error(Energy energy, const TriangleTerm& term, const Eigen::Matrix2d& A) {
   switch (energy) {
-    case Energy::frobenius: return frobenius_quadratic(term.M, A) * term.weight;
-    case Energy::similarity: return similarity_quadratic(term.M, A) * term.weight;
-    case Energy::blend: return blend_quadratic(term.M, A, term.frobenius_share) * term.weight;
+    case Energy::frobenius: return frobenius_quadratic(term.D, A) * term.weight;
+    case Energy::similarity: return similarity_quadratic(term.D, A) * term.weight;
+    case Energy::blend: return blend_quadratic(term.D, A, term.frobenius_share) * term.weight;
     case Energy::procrustes: return procrustes_quadratic(term.corners, A) * term.weight;
   }
   return {};
@@ -42,7 +42,7 @@ TriangleQuadratic<double> local_error(Energy energy, const TriangleTerm& term, c
 /// The linear term of E_i: only E^F's share has one (E^R and E^S are pure quadratic forms).
 Eigen::Matrix<double, 6, 1> local_error_linear_term(Energy energy, const TriangleTerm& term, const Eigen::Matrix2d& A) {
   if (energy == Energy::frobenius || energy == Energy::blend)
-    return frobenius_linear_term(term.M, A) * (term.weight * term.frobenius_share);
+    return frobenius_linear_term(term.D, A) * (term.weight * term.frobenius_share);
   return Eigen::Matrix<double, 6, 1>::Zero();
 }
 
@@ -128,7 +128,7 @@ void FrameAssembly::build_pattern() {
       }
   if (!columns.empty()) {
     double grounding = 0;  // comparable to a triangle's diagonal entries
-    for (const TriangleTerm& term : forward_terms_) grounding += term.weight * (term.M.transpose() * term.M).trace();
+    for (const TriangleTerm& term : forward_terms_) grounding += 2 * term.weight * term.D.squaredNorm();  // tr MᵀM
     grounding /= static_cast<double>(size);
     for (int r = 0; r < d; ++r) {
       constant_values_[static_cast<std::size_t>(slot(r, r))] += grounding;

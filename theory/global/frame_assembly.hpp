@@ -20,7 +20,7 @@ namespace affinterp::global {
 /// One local error E_i(A_i(s), B_i(x)), its reference corners and weights.
 struct TriangleTerm {
   std::array<Eigen::Index, 3> vertex;
-  Eigen::Matrix<double, 4, 6> M;  ///< vec B_i = M x (eq. (1))
+  Eigen::Matrix<double, 3, 2> D;  ///< B_i = V D (eq. (1))
   Corners<double> corners;        ///< the reference triangle (source, or target for the reverse problem)
   double weight = 1.0;            ///< its area when area weighted, else 1
   double frobenius_share = 1.0;   ///< w_i: E^F's share of the blend

@@ -2,8 +2,10 @@
 // The local error functions of Kaji §4 and the Appendix, as closed forms in (A, B) and as quadratic
 // forms in the six vertex coordinates x = (v_0x, v_0y, v_1x, v_1y, v_2x, v_2y) of one triangle:
 //     E_i(x) = xᵀ H x + gᵀ x + c.
-// Templated on the scalar so that the claims can assemble them in exact rationals.
+// Templated on the scalar so that the claims can assemble them in exact rationals (hence lazyProduct and
+// local::scaled: Boost 1.74's cpp_rational meets neither Eigen's product evaluator nor scalar operators).
 #include "theory/global/triangle_map.hpp"
+#include "theory/local/matrix2.hpp"
 
 #include <Eigen/Core>
 
@@ -36,7 +38,7 @@ Scalar frobenius_error(const Mat2<Scalar>& A, const Mat2<Scalar>& B) {
 /// ‖B‖² − (‖B ᵀA‖² + 2 det(B ᵀA)) / ‖A‖².
 template <class Scalar>
 Scalar similarity_error(const Mat2<Scalar>& A, const Mat2<Scalar>& B) {
-  const Mat2<Scalar> BAt = B * A.transpose();
+  const Mat2<Scalar> BAt = B.lazyProduct(A.transpose());
   return B.squaredNorm() - (BAt.squaredNorm() + Scalar(2) * BAt.determinant()) / A.squaredNorm();
 }
 
@@ -44,7 +46,8 @@ Scalar similarity_error(const Mat2<Scalar>& A, const Mat2<Scalar>& B) {
 /// projecting B onto span{A, JA} (⟨A, JA⟩ = 0, ‖JA‖ = ‖A‖).
 template <class Scalar>
 Scalar similarity_error_by_projection(const Mat2<Scalar>& A, const Mat2<Scalar>& B) {
-  const Scalar a = frobenius_inner(A, B), j = frobenius_inner(rotation_J<Scalar>() * A, B);
+  const Mat2<Scalar> JA = rotation_J<Scalar>().lazyProduct(A);
+  const Scalar a = frobenius_inner(A, B), j = frobenius_inner(JA, B);
   return B.squaredNorm() - (a * a + j * j) / A.squaredNorm();
 }
 
@@ -59,39 +62,49 @@ struct TriangleQuadratic {
     H += other.H, g += other.g, c += other.c;
     return *this;
   }
-  TriangleQuadratic operator*(const Scalar& w) const { return {H * w, g * w, c * w}; }
+  TriangleQuadratic operator*(const Scalar& w) const { return {local::scaled(w, H), local::scaled(w, g), c * w}; }
 };
 
-/// The linear part g = −2 Mᵀ vec A of E^F below: all that changes with t when E^F's G does not.
+/// The operator D of B = V D (triangle_map.hpp) for one triangle.
 template <class Scalar>
-Eigen::Matrix<Scalar, 6, 1> frobenius_linear_term(const Eigen::Matrix<Scalar, 4, 6>& M, const Mat2<Scalar>& A) {
-  return Scalar(-2) * M.transpose() * vec(A);
+using LinearPartOperator = Eigen::Matrix<Scalar, 3, 2>;
+
+/// The linear part g = −2 Mᵀ vec A of E^F below, computed as g_k = −2 A D_kᵀ (D_k the k-th row of D): all
+/// that changes with t when E^F's G does not.
+template <class Scalar>
+Eigen::Matrix<Scalar, 6, 1> frobenius_linear_term(const LinearPartOperator<Scalar>& D, const Mat2<Scalar>& A) {
+  const Eigen::Matrix<Scalar, 2, 3> ADt = A.lazyProduct(D.transpose());
+  Eigen::Matrix<Scalar, 6, 1> g;
+  for (int k = 0; k < 6; ++k) g[k] = Scalar(-2) * ADt.data()[k];
+  return g;
 }
 
-/// E^F(A, B(x)) with vec B = M x (M from vectorised_linear_part_operator): H = MᵀM, g = −2 Mᵀ vec A,
-/// c = ‖A‖².
+/// E^F(A, B(x)) with vec B = M x, M = Dᵀ ⊗ I₂: H = MᵀM, g = −2 Mᵀ vec A, c = ‖A‖².
 template <class Scalar>
-TriangleQuadratic<Scalar> frobenius_quadratic(const Eigen::Matrix<Scalar, 4, 6>& M, const Mat2<Scalar>& A) {
-  return {M.transpose() * M, frobenius_linear_term(M, A), A.squaredNorm()};
+TriangleQuadratic<Scalar> frobenius_quadratic(const LinearPartOperator<Scalar>& D, const Mat2<Scalar>& A) {
+  const Eigen::Matrix<Scalar, 4, 6> M = vectorised_linear_part_operator(D);
+  return {M.transpose().lazyProduct(M), frobenius_linear_term(D, A), A.squaredNorm()};
 }
 
 /// E^R(A, B(x)) = ‖B‖² − (⟨A, B⟩² + ⟨JA, B⟩²)/‖A‖²: H = MᵀM − (m_a m_aᵀ + m_j m_jᵀ)/‖A‖² with
 /// m_a = Mᵀ vec A, m_j = Mᵀ vec JA; no linear or constant part.
 template <class Scalar>
-TriangleQuadratic<Scalar> similarity_quadratic(const Eigen::Matrix<Scalar, 4, 6>& M, const Mat2<Scalar>& A) {
-  const Eigen::Matrix<Scalar, 6, 1> m_a = M.transpose() * vec(A);
-  const Eigen::Matrix<Scalar, 6, 1> m_j = M.transpose() * vec<Scalar>(rotation_J<Scalar>() * A);
+TriangleQuadratic<Scalar> similarity_quadratic(const LinearPartOperator<Scalar>& D, const Mat2<Scalar>& A) {
+  const Eigen::Matrix<Scalar, 4, 6> M = vectorised_linear_part_operator(D);
+  const Eigen::Matrix<Scalar, 6, 1> m_a = M.transpose().lazyProduct(vec(A));
+  const Eigen::Matrix<Scalar, 6, 1> m_j = M.transpose().lazyProduct(vec<Scalar>(rotation_J<Scalar>().lazyProduct(A)));
+  const Eigen::Matrix<Scalar, 6, 6> projected = m_a.lazyProduct(m_a.transpose()) + m_j.lazyProduct(m_j.transpose());
   TriangleQuadratic<Scalar> q;
-  q.H = M.transpose() * M - (m_a * m_a.transpose() + m_j * m_j.transpose()) / A.squaredNorm();
+  q.H = M.transpose().lazyProduct(M) - local::scaled(Scalar(1) / A.squaredNorm(), projected);
   return q;
 }
 
 /// w E^F + (1 − w) E^R ("Improvements").
 template <class Scalar>
-TriangleQuadratic<Scalar> blend_quadratic(const Eigen::Matrix<Scalar, 4, 6>& M, const Mat2<Scalar>& A,
+TriangleQuadratic<Scalar> blend_quadratic(const LinearPartOperator<Scalar>& D, const Mat2<Scalar>& A,
                                           const Scalar& w) {
-  TriangleQuadratic<Scalar> q = frobenius_quadratic(M, A) * w;
-  q += similarity_quadratic(M, A) * (Scalar(1) - w);
+  TriangleQuadratic<Scalar> q = frobenius_quadratic(D, A) * w;
+  q += similarity_quadratic(D, A) * (Scalar(1) - w);
   return q;
 }
 
@@ -100,15 +113,16 @@ TriangleQuadratic<Scalar> blend_quadratic(const Eigen::Matrix<Scalar, 4, 6>& M, 
 /// matrices: E^S = ‖Y‖² − (⟨X, Y⟩² + ⟨JX, Y⟩²)/‖X‖², so H = Π ⊗ I₂ − (x xᵀ + j jᵀ)/‖X‖².
 template <class Scalar>
 TriangleQuadratic<Scalar> procrustes_quadratic(const Corners<Scalar>& p, const Mat2<Scalar>& A) {
-  const Eigen::Matrix<Scalar, 2, 1> centroid = (p.col(0) + p.col(1) + p.col(2)) / Scalar(3);
+  const Eigen::Matrix<Scalar, 2, 1> centroid = local::scaled(Scalar(1) / Scalar(3), p.rowwise().sum());
   const Corners<Scalar> centred = p.colwise() - centroid;
-  const Corners<Scalar> X = A * centred, JX = rotation_J<Scalar>() * X;
+  const Corners<Scalar> X = A.lazyProduct(centred), JX = rotation_J<Scalar>().lazyProduct(X);
   const Eigen::Map<const Eigen::Matrix<Scalar, 6, 1>> x(X.data()), j(JX.data());
   TriangleQuadratic<Scalar> q;
   for (int k = 0; k < 3; ++k)
     for (int l = 0; l < 3; ++l)
       for (int r = 0; r < 2; ++r) q.H(2 * k + r, 2 * l + r) = (k == l ? Scalar(2) : Scalar(-1)) / Scalar(3);
-  q.H -= (x * x.transpose() + j * j.transpose()) / X.squaredNorm();
+  const Eigen::Matrix<Scalar, 6, 6> projected = x.lazyProduct(x.transpose()) + j.lazyProduct(j.transpose());
+  q.H -= local::scaled(Scalar(1) / X.squaredNorm(), projected);
   return q;
 }
 

@@ -26,7 +26,14 @@ class LocalPaths {
  private:
   LocalHomotopy homotopy_;
   Eigen::VectorXd theta_;
-  std::vector<local::ExpLogHomotopy<double>> exp_;
+  /// A^E(t) = R_{tθ} S^t with S^t = R_{−β} diag(λ1^t, λ2^t) R_β = ((λ1^t + λ2^t)/2) I + ((λ1^t − λ2^t)/2) N,
+  /// N = R_{−β} diag(1, −1) R_β: the same path as local::ExpLogHomotopy, evaluated with one sincos and two
+  /// exp per triangle (the per-frame cost of E^F on large meshes).
+  struct ExpPath {
+    double theta, log_lambda1, log_lambda2;
+    Eigen::Matrix2d N;
+  };
+  std::vector<ExpPath> exp_;
   std::vector<local::PolarHomotopy<double>> polar_;
   std::vector<local::LinearHomotopy<double>> linear_;
   std::vector<local::SvdHomotopy<double>> svd_;

@@ -19,13 +19,13 @@ Eigen::Matrix<Scalar, 3, 2> linear_part_operator(const Corners<Scalar>& p) {
   edges.col(1) = p.col(2) - p.col(0);
   Eigen::Matrix<Scalar, 3, 2> difference;
   difference << Scalar(-1), Scalar(-1), Scalar(1), Scalar(0), Scalar(0), Scalar(1);
-  return difference * edges.inverse();
+  const Eigen::Matrix<Scalar, 2, 2> inverse = edges.inverse();
+  return difference.lazyProduct(inverse);  // lazyProduct: Eigen's product evaluator rejects cpp_rational
 }
 
 /// M with vec(B) = M x for x = (v_0x, v_0y, v_1x, v_1y, v_2x, v_2y) and vec column-major: M = Dᵀ ⊗ I₂.
 template <class Scalar>
-Eigen::Matrix<Scalar, 4, 6> vectorised_linear_part_operator(const Corners<Scalar>& p) {
-  const Eigen::Matrix<Scalar, 3, 2> D = linear_part_operator(p);
+Eigen::Matrix<Scalar, 4, 6> vectorised_linear_part_operator(const Eigen::Matrix<Scalar, 3, 2>& D) {
   Eigen::Matrix<Scalar, 4, 6> M = Eigen::Matrix<Scalar, 4, 6>::Zero();
   for (int column = 0; column < 2; ++column)
     for (int k = 0; k < 3; ++k)
@@ -36,7 +36,7 @@ Eigen::Matrix<Scalar, 4, 6> vectorised_linear_part_operator(const Corners<Scalar
 /// The linear part of the affine map sending the corners p to the corners q (eq. (1)).
 template <class Scalar>
 Eigen::Matrix<Scalar, 2, 2> linear_part(const Corners<Scalar>& p, const Corners<Scalar>& q) {
-  return q * linear_part_operator(p);
+  return q.lazyProduct(linear_part_operator(p));
 }
 
 /// Column-major vec of a 2×2 matrix.

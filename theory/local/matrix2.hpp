@@ -31,6 +31,15 @@ auto scaled(const Scalar& s, const Eigen::MatrixBase<Derived>& M) {
   return M.unaryExpr([s](const Scalar& m) { return Scalar(s * m); });
 }
 
+/// Entrywise equality (for exact scalars; Eigen's operator== does not compile over cpp_rational).
+template <class DerivedA, class DerivedB>
+bool exactly_equal(const Eigen::MatrixBase<DerivedA>& a, const Eigen::MatrixBase<DerivedB>& b) {
+  for (Eigen::Index i = 0; i < a.rows(); ++i)
+    for (Eigen::Index j = 0; j < a.cols(); ++j)
+      if (!(a(i, j) == b(i, j))) return false;
+  return true;
+}
+
 /// det of a 2×2 matrix, written out so that it is exact for exact scalars.
 template <class Scalar>
 Scalar det2(const Mat2<Scalar>& A) {

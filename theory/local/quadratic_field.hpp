@@ -54,10 +54,12 @@ struct QuadraticSurd {
   }
 };
 
-/// "a + b*sqrt(d)" with a, b as "p/q".
+/// "a + b*sqrt(d)" with a, b as "p/q"; a zero part is left out.
 template <int d>
 std::string to_string(const QuadraticSurd<d>& u) {
-  return exact::to_string(u.a) + " + " + exact::to_string(u.b) + "*sqrt(" + std::to_string(d) + ")";
+  const std::string surd = exact::to_string(u.b) + "*sqrt(" + std::to_string(d) + ")";
+  if (u.b == 0) return exact::to_string(u.a);
+  return u.a == 0 ? surd : exact::to_string(u.a) + " + " + surd;
 }
 
 using QSqrt3 = QuadraticSurd<3>;

@@ -1,0 +1,151 @@
+// Speed of the global interpolation engine (Kaji Appendix, "Efficiency"): set-up (local maps, polar
+// decompositions, rotation branches, sparsity pattern, symbolic analysis, first factorisation) and one
+// frame (v(t) for a new t) per energy, on the octopus mesh of ../shared (66,527 triangles) bent by a
+// known curl — or, when ../shared is absent, on a generated strip of similar size (the benchmark names
+// say which). The baseline refactorises from scratch every frame (symbolic + numeric, as common public
+// implementations do), measured in the same run.
+#include "experiments/io/mesh_file.hpp"
+#include "experiments/shapes/curl.hpp"
+#include "theory/global/constraint_terms.hpp"
+#include "theory/global/frame_assembly.hpp"
+#include "theory/global/interpolation.hpp"
+#include "theory/global/local_paths.hpp"
+#include "theory/global/rotation_branch.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <Eigen/SparseCholesky>
+
+#include <filesystem>
+#include <memory>
+
+namespace affinterp {
+namespace {
+
+using global::Energy;
+
+struct Workload {
+  std::string name;
+  global::Mesh source, target;
+};
+
+/// A cols × rows grid of unit squares, two triangles each (the fallback when ../shared is absent).
+global::Mesh generated_strip(int cols, int rows) {
+  global::Mesh mesh;
+  mesh.vertices.resize(2, (cols + 1) * (rows + 1));
+  for (int j = 0; j <= rows; ++j)
+    for (int i = 0; i <= cols; ++i) mesh.vertices.col(j * (cols + 1) + i) = Eigen::Vector2d(i, j) / rows;
+  mesh.triangles.resize(3, 2 * cols * rows);
+  for (int j = 0, t = 0; j < rows; ++j)
+    for (int i = 0; i < cols; ++i) {
+      const int a = j * (cols + 1) + i, b = a + 1, c = a + cols + 1, d = c + 1;
+      mesh.triangles.col(t++) = Eigen::Vector3i(a, b, d);
+      mesh.triangles.col(t++) = Eigen::Vector3i(a, d, c);
+    }
+  return mesh;
+}
+
+/// The source bent by a circular curl through one radian along its width (a known deformation).
+const Workload& workload() {
+  static const Workload w = [] {
+    namespace fs = std::filesystem;
+    const fs::path folder = AFFINTERP_SOURCE_DIR "/../shared/data/meshes";
+    const fs::path shared = fs::exists(folder) ? folder : fs::path("/work/shared/data/meshes");
+    Workload load;
+    if (fs::exists(shared / "octopus.obj")) {
+      load.name = "octopus", load.source = io::read_mesh(shared / "octopus.obj");
+    } else {
+      load.name = "strip-66k", load.source = generated_strip(543, 61);  // 66,246 triangles
+    }
+    const Eigen::Vector2d low = load.source.vertices.rowwise().minCoeff(), high = load.source.vertices.rowwise().maxCoeff();
+    const Eigen::Vector2d centre_left(low.x(), (low.y() + high.y()) / 2);
+    const shapes::Curl curl{high.x() - low.x(), 1.0, 1};
+    load.target = load.source;
+    load.target.vertices = curl.apply(Eigen::Matrix2Xd(load.source.vertices.colwise() - centre_left), 1);
+    return load;
+  }();
+  return w;
+}
+
+global::InterpolationOptions options_for(Energy energy) {
+  const global::Mesh& P = workload().source;
+  Eigen::Index left = 0, right = 0;
+  for (Eigen::Index k = 1; k < P.vertex_count(); ++k) {
+    if (P.vertices(0, k) < P.vertices(0, left)) left = k;
+    if (P.vertices(0, k) > P.vertices(0, right)) right = k;
+  }
+  global::InterpolationOptions options;
+  options.energy = energy;
+  options.constraints.pinned = {{left, 1.0}, {right, 1.0}};
+  return options;
+}
+
+void set_up(benchmark::State& state, Energy energy) {
+  const Workload& w = workload();
+  for (auto _ : state) {
+    global::Interpolation interpolation(w.source, w.target, options_for(energy));
+    benchmark::DoNotOptimize(&interpolation);
+  }
+  state.counters["triangles"] = static_cast<double>(w.source.triangle_count());
+}
+
+void frame(benchmark::State& state, Energy energy) {
+  const Workload& w = workload();
+  const global::Interpolation interpolation(w.source, w.target, options_for(energy));
+  int k = 0;
+  for (auto _ : state) {
+    const double t = (k++ % 60 + 0.5) / 60;
+    benchmark::DoNotOptimize(interpolation.vertices_at(t).data());
+  }
+  state.counters["frames/s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["factored_once"] = interpolation.factored_once();
+}
+
+/// The baseline: the same matrix, analysed and factorised from scratch for every frame.
+void frame_refactor(benchmark::State& state, Energy energy) {
+  const Workload& w = workload();
+  const global::InterpolationOptions options = options_for(energy);
+  std::vector<Eigen::Matrix2d> A;
+  Eigen::VectorXd theta(w.source.triangle_count());
+  for (Eigen::Index i = 0; i < w.source.triangle_count(); ++i) {
+    global::Corners<double> p, q;
+    for (int c = 0; c < 3; ++c) p.col(c) = w.source.corner(i, c), q.col(c) = w.target.corner(i, c);
+    A.push_back(global::linear_part(p, q));
+    theta[i] = global::principal_polar_angle(A.back());
+  }
+  const global::LocalPaths paths(A, options.homotopy, global::consistent_angles(w.source.triangles, theta));
+  global::FrameAssembly assembly(w.source, w.target, options, paths, nullptr,
+                                 global::constraint_terms(options.constraints, w.source, w.target, paths));
+  int k = 0;
+  for (auto _ : state) {
+    const double t = (k++ % 60 + 0.5) / 60;
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(assembly.matrix_at(t));
+    benchmark::DoNotOptimize(Eigen::MatrixXd(ldlt.solve(assembly.right_hand_side_at(t))).data());
+  }
+  state.counters["frames/s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+void register_all() {
+  const std::string mesh = workload().name;
+  for (const Energy energy : {Energy::frobenius, Energy::similarity, Energy::procrustes, Energy::blend}) {
+    const std::string e = global::to_string(energy);
+    benchmark::RegisterBenchmark(("setup/" + e + "/" + mesh).c_str(), set_up, energy)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+    benchmark::RegisterBenchmark(("frame/" + e + "/" + mesh).c_str(), frame, energy)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+  }
+  for (const Energy energy : {Energy::frobenius, Energy::similarity}) {
+    const std::string e = global::to_string(energy);
+    benchmark::RegisterBenchmark(("frame_refactor/" + e + "/" + mesh).c_str(), frame_refactor, energy)
+        ->Unit(benchmark::kMillisecond)
+        ->MinTime(1.0);
+  }
+}
+
+}  // namespace
+}  // namespace affinterp
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  affinterp::register_all();
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+}

@@ -1,0 +1,78 @@
+// Kaji §4 quotes the [ACOL00] constraint as C = ‖(1−t)p_1 + t p_1 − v_1(t)‖², which is ‖p_1 − v_1(t)‖²:
+// vertex 1 never leaves p_1. With E^F the frame at t = 1 is then the target translated by p_1 − q_1,
+// so B(1)p_k = q_k fails unless p_1 = q_1. The evidently intended (1−t)p_1 + t q_1 is tested too.
+// Exact: at t = 1 every local homotopy gives A_i(1) = A_i, so the frame solves a rational linear system.
+#include "experiments/claims/global/exact_global.hpp"
+#include "experiments/claims/global/global_checks.hpp"
+#include "experiments/claims/values.hpp"
+
+namespace affinterp::claims {
+namespace {
+
+using global_exact::Mat2Q;
+using global_exact::Rational;
+using global_exact::VecQ;
+
+/// v(1) minimising Σ E^F(A_i, B_i) + ‖r − v_1‖², exactly.
+VecQ frame_at_one(const global_exact::RationalMeshPair& mesh, const Eigen::Matrix<Rational, 2, 1>& r) {
+  std::vector<Mat2Q> A;
+  for (Eigen::Index i = 0; i < mesh.triangles.cols(); ++i) A.push_back(mesh.linear_part(i));
+  auto form = global_exact::assemble(mesh, global::Energy::frobenius, 1, A);
+  form.G(0, 0) += 1, form.G(1, 1) += 1;
+  form.u[0] -= 2 * r[0], form.u[1] -= 2 * r[1];
+  return global_exact::solve(form.G, local::scaled(Rational(-1, 2), form.u));
+}
+
+VecQ flatten(const Eigen::Matrix<Rational, 2, Eigen::Dynamic>& V) {
+  VecQ v(2 * V.cols());
+  for (Eigen::Index k = 0; k < V.cols(); ++k) v[2 * k] = V(0, k), v[2 * k + 1] = V(1, k);
+  return v;
+}
+
+Outcome acol_constraint(const RunContext& ctx) {
+  Outcome out;
+  const std::uint64_t seed = ctx.seed_for("kaji.acol.constraint");
+  Rng rng(seed);
+  const int samples = ctx.pick(3, 20);
+  int printed_reaches = 0, intended_reaches = 0, p1_equals_q1 = 0;
+  for (int k = 0; k < samples; ++k) {
+    const auto mesh = global_exact::random_rational_pair(rng, static_cast<int>(rng.integer(1, 3)), static_cast<int>(rng.integer(1, 2)));
+    const Eigen::Matrix<Rational, 2, 1> p1 = mesh.P.col(0), q1 = mesh.Q.col(0);
+    p1_equals_q1 += p1 == q1;
+    printed_reaches += frame_at_one(mesh, p1) == flatten(mesh.Q);   // (1−t)p1 + t p1 at t = 1
+    intended_reaches += frame_at_one(mesh, q1) == flatten(mesh.Q);  // (1−t)p1 + t q1 at t = 1
+  }
+  // The smallest counterexample: one triangle translated by (1, 0).
+  global_exact::RationalMeshPair triangle;
+  triangle.P.resize(2, 3), triangle.Q.resize(2, 3);
+  triangle.P << 0, 1, 0, 0, 0, 1;
+  triangle.Q << 1, 2, 1, 0, 0, 1;
+  triangle.triangles = Eigen::Matrix3Xi(3, 1);
+  triangle.triangles << 0, 1, 2;
+  const VecQ printed = frame_at_one(triangle, triangle.P.col(0)), intended = frame_at_one(triangle, triangle.Q.col(0));
+  const bool printed_fails = printed != flatten(triangle.Q) || printed_reaches < samples - p1_equals_q1;
+  const bool intended_holds = intended == flatten(triangle.Q) && intended_reaches == samples;
+  out.verdict = printed_fails ? (intended_holds ? Verdict::corrected : Verdict::refuted)
+                              : (intended_holds ? Verdict::confirmed : Verdict::refuted);
+  out.summary = "as printed, ‖(1−t)p1 + t p1 − v1‖² = ‖p1 − v1‖² pins v1 at p1, so B(1)p_k = q_k + (p1 − q1) ≠ q_k; "
+                "with (1−t)p1 + t q1 the frame at t = 1 is exactly Q";
+  out.correction = "C(v_1(t), …, v_n(t)) = ‖(1−t)p_1 + t q_1 − v_1(t)‖²";
+  out.evidence.method = "exact rational solve of the E^F + constraint minimiser at t = 1 (A_i(1) = A_i for every homotopy)";
+  out.evidence.sample_size = static_cast<std::uint64_t>(samples);
+  out.evidence.seed = seed;
+  out.evidence.details = {{"printed_reaches_Q", printed_reaches}, {"intended_reaches_Q", intended_reaches},
+                          {"meshes_with_p1_equal_q1", p1_equals_q1}, {"meshes", samples}};
+  out.counterexample = triangle.to_json();
+  out.counterexample["t"] = "1";
+  out.counterexample["constraint"] = "‖(1−t)p1 + t p1 − v1(t)‖² with p1 = vertex 0";
+  nlohmann::json v = nlohmann::json::array();
+  for (Eigen::Index k = 0; k < 3; ++k) v.push_back({exact::to_string(printed[2 * k]), exact::to_string(printed[2 * k + 1])});
+  out.counterexample["v_at_t1_printed"] = v;
+  return out;
+}
+
+}  // namespace
+
+void register_acol_constraint_check(CheckRegistry& registry) { registry.add("kaji.acol.constraint", acol_constraint); }
+
+}  // namespace affinterp::claims

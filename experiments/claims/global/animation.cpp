@@ -1,0 +1,85 @@
+#include "experiments/claims/global/animation.hpp"
+
+#include "plots/figure.hpp"
+#include "plots/mesh_strip.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace affinterp::claims::global_figures {
+
+Eigen::Index Animation::most_flips() const {
+  Eigen::Index most = 0;
+  for (const auto& m : metrics) most = std::max(most, m.flipped_triangles);
+  return most;
+}
+
+double Animation::min_det() const {
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const auto& m : metrics) smallest = std::min(smallest, m.min_det);
+  return smallest;
+}
+
+Animation animate(const std::string& label, const global::Mesh& source, const global::Interpolation& interpolation,
+                  int count) {
+  Animation animation{label, {}, {}, {}};
+  for (int k = 0; k < count; ++k) {
+    const double t = static_cast<double>(k) / (count - 1);
+    animation.t.push_back(t);
+    animation.frames.push_back(interpolation.vertices_at(t));
+    animation.metrics.push_back(global::frame_metrics(source, animation.frames.back()));
+  }
+  return animation;
+}
+
+Eigen::Index extreme_vertex(const global::Mesh& mesh, const Eigen::Vector2d& direction) {
+  Eigen::Index best = 0;
+  for (Eigen::Index k = 1; k < mesh.vertex_count(); ++k)
+    if (direction.dot(mesh.vertices.col(k)) > direction.dot(mesh.vertices.col(best))) best = k;
+  return best;
+}
+
+std::vector<std::string> draw_animations(const RunContext& ctx, const std::string& name, const global::Mesh& source,
+                                         const std::vector<Animation>& animations, const std::vector<int>& shown_frames,
+                                         const std::string& title) {
+  std::vector<std::string> refs;
+  for (std::size_t a = 0; a < animations.size(); ++a) {
+    std::vector<plots::MeshFrame> frames;
+    for (const int k : shown_frames) {
+      char label[32];
+      std::snprintf(label, sizeof label, "t = %.2f", animations[a].t[static_cast<std::size_t>(k)]);
+      frames.push_back({animations[a].frames[static_cast<std::size_t>(k)], label});
+    }
+    const std::string stem = name + "-" + std::to_string(a + 1);
+    for (const auto& file : plots::draw_filmstrip(ctx.figure_stem(stem), source.triangles, frames,
+                                                  title + ": " + animations[a].label))
+      if (file.ends_with(".png")) refs.push_back(RunContext::figure_ref(std::filesystem::path(file).filename().string()));
+  }
+  plots::Table table;
+  for (std::size_t k = 0; k < animations.front().t.size(); ++k) {
+    plots::Row row{animations.front().t[k]};
+    for (const auto& animation : animations)
+      row.push_back(animation.metrics[k].min_det), row.push_back(static_cast<double>(animation.metrics[k].flipped_triangles));
+    table.push_back(row);
+  }
+  std::string plot_det = "plot ", plot_flips = "plot ";
+  for (std::size_t a = 0; a < animations.size(); ++a) {
+    const std::string sep = a + 1 < animations.size() ? ", " : "";
+    plot_det += "$metrics using 1:" + std::to_string(2 + 2 * a) + " with linespoints title " +
+                plots::gnuplot_string(animations[a].label) + sep;
+    plot_flips += "$metrics using 1:" + std::to_string(3 + 2 * a) + " with linespoints title " +
+                  plots::gnuplot_string(animations[a].label) + sep;
+  }
+  const auto files = plots::Figure(ctx.figure_stem(name + "-metrics"))
+                         .size(1000, 420)
+                         .data("metrics", table)
+                         .script("set multiplot layout 1,2 title " + plots::gnuplot_string(title) +
+                                 "\nset xlabel 't'\nset ylabel 'min_i det B_i(t)'\n" + plot_det +
+                                 "\nset ylabel 'flipped triangles'\n" + plot_flips + "\nunset multiplot\n")
+                         .render();
+  for (const auto& file : files)
+    if (file.ends_with(".png")) refs.push_back(RunContext::figure_ref(file));
+  return refs;
+}
+
+}  // namespace affinterp::claims::global_figures

@@ -1,0 +1,36 @@
+#pragma once
+// An interpolation sampled at evenly spaced frames with the per-frame metrics that decide the figure
+// claims (flips, min det B_i, distortion), and the drawing of its filmstrip and metric curves.
+#include "experiments/claims/context.hpp"
+#include "theory/global/interpolation.hpp"
+#include "theory/global/metrics.hpp"
+
+#include <string>
+#include <vector>
+
+namespace affinterp::claims::global_figures {
+
+struct Animation {
+  std::string label;  ///< e.g. "E^F"
+  std::vector<double> t;
+  std::vector<Eigen::Matrix2Xd> frames;
+  std::vector<global::FrameMetrics> metrics;
+
+  Eigen::Index most_flips() const;  ///< max over frames of the flipped-triangle count
+  double min_det() const;           ///< min over frames of min_i det B_i(t)
+};
+
+/// Frames at t = 0, 1/(count−1), …, 1.
+Animation animate(const std::string& label, const global::Mesh& source, const global::Interpolation& interpolation,
+                  int count);
+
+/// The vertex of `mesh` farthest in the direction `direction` (ties: the lowest index).
+Eigen::Index extreme_vertex(const global::Mesh& mesh, const Eigen::Vector2d& direction);
+
+/// Draws a filmstrip per animation (frames at the given indices) and one chart of min det B_i(t) and the
+/// flip count against t for all of them; returns the figure references for Outcome::figures.
+std::vector<std::string> draw_animations(const RunContext& ctx, const std::string& name, const global::Mesh& source,
+                                         const std::vector<Animation>& animations, const std::vector<int>& shown_frames,
+                                         const std::string& title);
+
+}  // namespace affinterp::claims::global_figures
