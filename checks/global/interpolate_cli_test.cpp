@@ -115,6 +115,19 @@ TEST(InterpolateCli, AcceptsEveryOptionFamily) {
   }
 }
 
+TEST(InterpolateCli, ClockwiseFilesAreReorientedAndFramesKeepTheirFaceList) {
+  const fs::path d = scratch("clockwise");
+  write_text(d / "s.obj", "v 0 0\nv 0 1\nv 1 0\nv 1 1\nf 1 2 3\nf 3 2 4\n");
+  write_text(d / "t.obj", "v 0 0\nv 0 2\nv 2 0\nv 2 2\nf 1 2 3\nf 3 2 4\n");
+  const auto result = run_cli("interpolate --source " + (d / "s.obj").string() + " --target " + (d / "t.obj").string() +
+                              " --frames 3 --no-figures --out " + (d / "out").string());
+  ASSERT_EQ(result.status, 0) << result.error;
+  EXPECT_NE(result.error.find("clockwise"), std::string::npos);
+  EXPECT_EQ(io::read_mesh(d / "out" / "frame_0001.obj").triangles, io::read_mesh(d / "s.obj").triangles);
+  EXPECT_TRUE(read_json(d / "out" / "metrics.json")["reoriented"].get<bool>());
+  EXPECT_EQ(read_json(d / "out" / "metrics.json")["frames"][1]["flipped_triangles"].get<int>(), 0);
+}
+
 /// Runs `interpolate ARGS --out OUT` on a folder holding earlier output; expects a refusal that leaves it.
 void expect_refused(const std::string& args, int status, const std::string& message_part) {
   SCOPED_TRACE(args);

@@ -9,6 +9,7 @@
 #include "plots/mesh_animation.hpp"
 #include "plots/mesh_strip.hpp"
 #include "theory/global/interpolation.hpp"
+#include "theory/global/mesh_validation.hpp"
 #include "theory/global/metrics.hpp"
 
 #include <nlohmann/json.hpp>
@@ -151,7 +152,8 @@ void run(const InterpolateOptions& o) {
   const bool long_run = static_cast<double>(o.frames) * static_cast<double>(pair.source.triangle_count()) > 2e5;
   std::optional<Progress> progress;
   if (long_run) progress.emplace("interpolating", static_cast<std::size_t>(o.frames));
-  global::Mesh frame = pair.source;
+  global::Mesh frame = pair.source;  // frames keep the files' face list, clockwise ones included
+  if (pair.reoriented) global::reverse_orientation(frame);
   for (int k = 0; k < o.frames; ++k) {
     const double t = options.t_begin + (options.t_end - options.t_begin) * k / (o.frames - 1);
     frame.vertices = interpolation->vertices_at(t);
@@ -213,7 +215,10 @@ void add_interpolate_command(CLI::App& app) {
       "interpolate",
       "Interpolate between two compatible 2D triangle meshes (Kaji et al. 2012, §3-4): writes OUT/frame_0000.obj ..., "
       "OUT/filmstrip.png/.svg, OUT/animation.gif (with ImageMagick) and OUT/metrics.json. Vertex indices are 0-based "
-      "(the order of the v lines). On any error OUT keeps its earlier content.");
+      "(the order of the v lines). Meshes: triangles only (polygons refused), z = 0; when every source triangle runs "
+      "clockwise all are reversed for the computation (frames keep the files' face list); mixed orientations, zero-area "
+      "source triangles and flipped target triangles (unless allowed) are refused. On any error OUT keeps its earlier "
+      "content.");
   cmd->add_option("--source", o->source, "Source mesh (.obj or .off; z must be 0)")->required();
   cmd->add_option("--target", o->target, "Target mesh with the same triangles")->required();
   cmd->add_option("--out", o->out, "Output folder")->required();

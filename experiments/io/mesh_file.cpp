@@ -4,7 +4,6 @@
 #include <cctype>
 #include <charconv>
 #include <climits>
-#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <sstream>

@@ -3,6 +3,7 @@
 #include "experiments/shapes/outline.hpp"
 #include "experiments/shapes/triangulate.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <numbers>
