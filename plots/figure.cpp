@@ -1,6 +1,6 @@
 #include "plots/figure.hpp"
 
-#include <gnuplot-iostream.h>
+#include "plots/gnuplot_process.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -12,21 +12,6 @@
 namespace affinterp::plots {
 
 namespace fs = std::filesystem;
-
-namespace {
-
-/// The first line of gnuplot's diagnostics that reports an error, or "" when there is none. gnuplot
-/// echoes the offending command, marks it with '^', then says "line N: <what>" (or "... error ...");
-/// warnings say "warning" and pass.
-std::string first_error_line(const fs::path& log) {
-  static const std::regex error(R"((line \d+:)|rror)");
-  std::ifstream in(log);
-  for (std::string line; std::getline(in, line);)
-    if (std::regex_search(line, error) && line.find("arning") == std::string::npos) return line;
-  return "";
-}
-
-}  // namespace
 
 Figure& Figure::size(int width_px, int height_px) {
   width_ = width_px;
@@ -63,19 +48,7 @@ const std::string& house_style() {
 
 std::vector<std::string> Figure::render() const {
   std::ostringstream blocks;
-  blocks << std::setprecision(17);
-  for (const auto& [name, table] : tables_) {
-    blocks << "$" << name << " << EOD\n";
-    for (const Row& row : table) {
-      for (std::size_t i = 0; i < row.size(); ++i) {
-        if (i) blocks << ' ';
-        if (std::isnan(row[i])) blocks << "NaN";
-        else blocks << row[i];
-      }
-      blocks << '\n';
-    }
-    blocks << "EOD\n";
-  }
+  for (const auto& [name, table] : tables_) write_datablock(blocks, name, table);
 
   const fs::path log = fs::path(stem_.string() + ".gnuplot.log");
   const std::vector<std::pair<std::string, std::string>> formats = {
@@ -87,10 +60,10 @@ std::vector<std::string> Figure::render() const {
     const fs::path out = fs::path(stem_.string() + "." + extension);
     fs::remove(out);
     {
-      Gnuplot gp("gnuplot 2>'" + log.string() + "'");
-      gp << house_style() << blocks.str();
-      gp << "set terminal " << terminal << " size " << width_ << "," << height_ << "\n";
-      gp << "set output '" << out.string() << "'\n" << script_ << "unset output\n";
+      const auto gp = start_gnuplot(log);
+      *gp << blocks.str();
+      *gp << "set terminal " << terminal << " size " << width_ << "," << height_ << "\n";
+      *gp << "set output " << gnuplot_string(out.string()) << "\n" << script_ << "unset output\n";
     }  // gnuplot has exited and the file is complete
     const std::string error = first_error_line(log);
     if (!error.empty() || !fs::exists(out) || fs::file_size(out) == 0)

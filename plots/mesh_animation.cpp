@@ -1,11 +1,8 @@
 #include "plots/mesh_animation.hpp"
 
+#include "plots/gnuplot_process.hpp"
 #include "plots/mesh_tables.hpp"
 
-#include <gnuplot-iostream.h>
-#include <unistd.h>
-
-#include <cstdlib>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -14,35 +11,7 @@ namespace affinterp::plots {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-/// A path in single quotes for /bin/sh.
-std::string shell_quoted(const fs::path& path) {
-  std::string quoted = "'";
-  for (char c : path.string()) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-void write_block(std::ostream& out, const std::string& name, const Table& table) {
-  out << "$" << name << " << EOD\n";
-  for (const Row& row : table) {
-    for (std::size_t i = 0; i < row.size(); ++i) out << (i ? " " : "") << row[i];
-    out << '\n';
-  }
-  out << "EOD\n";
-}
-
-}  // namespace
-
-std::optional<fs::path> find_convert() {
-  const char* path = std::getenv("PATH");
-  std::istringstream folders(path ? path : "");
-  for (std::string folder; std::getline(folders, folder, ':');) {
-    const fs::path candidate = fs::path(folder.empty() ? "." : folder) / "convert";
-    if (access(candidate.c_str(), X_OK) == 0) return candidate;
-  }
-  return std::nullopt;
-}
+std::optional<fs::path> find_convert() { return find_program("convert"); }
 
 bool write_animation_gif(const fs::path& gif, const Eigen::Matrix3Xi& triangles, const std::vector<MeshFrame>& frames,
                          int delay_cs) {
@@ -63,18 +32,18 @@ bool write_animation_gif(const fs::path& gif, const Eigen::Matrix3Xi& triangles,
   fs::create_directories(folder);
   const fs::path log = folder / "gnuplot.log";
   {
-    Gnuplot gp("gnuplot 2>" + shell_quoted(log));
-    gp << std::setprecision(12) << house_style() << "unset border\nunset tics\nunset grid\nset size ratio -1\n"
+    const auto gp = start_gnuplot(log);
+    *gp << std::setprecision(12) << "unset border\nunset tics\nunset grid\nset size ratio -1\n"
        << "set margins 0,0,0,0\nset xrange [" << lo.x() << ":" << hi.x() << "]\nset yrange [" << lo.y() << ":" << hi.y()
        << "]\nset terminal pngcairo size " << width << "," << height << " font 'DejaVu Sans,10'\n";
     for (std::size_t f = 0; f < frames.size(); ++f) {
       const MeshTables tables = mesh_tables(triangles, frames[f].vertices);
-      write_block(gp, "edges", tables.edges);
-      write_block(gp, "triangles", tables.triangles);
-      write_block(gp, "flipped", tables.flipped);
+      write_datablock(*gp, "edges", tables.edges);
+      write_datablock(*gp, "triangles", tables.triangles);
+      write_datablock(*gp, "flipped", tables.flipped);
       std::ostringstream name;
       name << "frame_" << std::setw(4) << std::setfill('0') << f << ".png";
-      gp << "set output " << gnuplot_string((folder / name.str()).string()) << "\nset label 1 " << gnuplot_string(frames[f].label)
+      *gp << "set output " << gnuplot_string((folder / name.str()).string()) << "\nset label 1 " << gnuplot_string(frames[f].label)
          << " at graph 0.02, graph 0.95 noenhanced\n"
          << mesh_plot_command(!tables.triangles.empty(), !tables.flipped.empty()) << "unset output\n";
     }

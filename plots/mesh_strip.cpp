@@ -1,5 +1,6 @@
 #include "plots/mesh_strip.hpp"
 
+#include "plots/gnuplot_process.hpp"
 #include "plots/mesh_tables.hpp"
 
 #include <algorithm>
@@ -8,12 +9,6 @@
 #include <stdexcept>
 
 namespace affinterp::plots {
-
-std::string gnuplot_string(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("''") : std::string(1, c);
-  return quoted + "'";
-}
 
 std::string mesh_plot_command(bool has_triangles, bool has_flipped) {
   std::string command = "plot ";

@@ -20,9 +20,6 @@ struct MeshFrame {
 std::vector<std::string> draw_filmstrip(const std::filesystem::path& stem, const Eigen::Matrix3Xi& triangles,
                                         const std::vector<MeshFrame>& frames, const std::string& title = "");
 
-/// `text` as a gnuplot single-quoted string ('' stands for ').
-std::string gnuplot_string(const std::string& text);
-
 /// The gnuplot commands that draw a mesh from the datablocks $triangles, $flipped and $edges.
 std::string mesh_plot_command(bool has_triangles, bool has_flipped);
 

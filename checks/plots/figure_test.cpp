@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 
 namespace fs = std::filesystem;
@@ -33,4 +34,13 @@ TEST(Figure, ReportsErrorsThatStillLeaveFilesBehind) {
 TEST(Figure, WarningsAreNotErrors) {
   const fs::path stem = fs::temp_directory_path() / "affinterp_figure_warning";
   EXPECT_NO_THROW(Figure(stem).script("plot [0:1] 1").render());  // "Warning: empty y range"
+}
+
+TEST(Figure, MissingGnuplotIsAClearErrorNotACrash) {
+  const char* saved = std::getenv("PATH");
+  const std::string path = saved ? saved : "";
+  setenv("PATH", "/nonexistent", 1);
+  const fs::path stem = fs::temp_directory_path() / "affinterp_figure_nognuplot";
+  EXPECT_THROW(Figure(stem).script("plot x").render(), std::runtime_error);
+  setenv("PATH", path.c_str(), 1);
 }

@@ -1,6 +1,7 @@
 #include "experiments/claims/global/animation.hpp"
 
 #include "plots/figure.hpp"
+#include "plots/gnuplot_process.hpp"
 #include "plots/mesh_strip.hpp"
 
 #include <algorithm>
