@@ -7,9 +7,8 @@
 namespace affinterp::checks {
 
 inline std::optional<std::filesystem::path> shared_meshes() {
-  for (const std::filesystem::path& folder : {std::filesystem::path(AFFINTERP_SOURCE_DIR "/../shared/data/meshes"),
-                                             std::filesystem::path("/work/shared/data/meshes")})
-    if (std::filesystem::exists(folder / "man0.obj")) return folder;
+  const std::filesystem::path folder(AFFINTERP_SOURCE_DIR "/../shared/data/meshes");
+  if (std::filesystem::exists(folder / "man0.obj")) return folder;
   return std::nullopt;
 }
 

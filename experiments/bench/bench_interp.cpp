@@ -49,8 +49,7 @@ global::Mesh generated_strip(int cols, int rows) {
 const Workload& workload() {
   static const Workload w = [] {
     namespace fs = std::filesystem;
-    const fs::path folder = AFFINTERP_SOURCE_DIR "/../shared/data/meshes";
-    const fs::path shared = fs::exists(folder) ? folder : fs::path("/work/shared/data/meshes");
+    const fs::path shared = AFFINTERP_SOURCE_DIR "/../shared/data/meshes";
     Workload load;
     if (fs::exists(shared / "octopus.obj")) {
       load.name = "octopus", load.source = io::read_mesh(shared / "octopus.obj");
