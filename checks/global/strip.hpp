@@ -1,6 +1,7 @@
 #pragma once
 // Small test shapes: a rectangular strip of triangles and its bend around an arc, built in the tests
 // themselves so that they need no files.
+#include "experiments/shapes/grid.hpp"
 #include "theory/global/mesh.hpp"
 
 #include <cmath>
@@ -13,14 +14,7 @@ inline Mesh strip(int cols, int rows) {
   mesh.vertices.resize(2, (cols + 1) * (rows + 1));
   for (int j = 0; j <= rows; ++j)
     for (int i = 0; i <= cols; ++i) mesh.vertices.col(j * (cols + 1) + i) = Eigen::Vector2d(i, j);
-  mesh.triangles.resize(3, 2 * cols * rows);
-  int t = 0;
-  for (int j = 0; j < rows; ++j)
-    for (int i = 0; i < cols; ++i) {
-      const int a = j * (cols + 1) + i, b = a + 1, c = a + cols + 1, d = c + 1;
-      mesh.triangles.col(t++) = Eigen::Vector3i(a, b, d);
-      mesh.triangles.col(t++) = Eigen::Vector3i(a, d, c);
-    }
+  mesh.triangles = shapes::grid_triangles(cols, rows);
   return mesh;
 }
 

@@ -6,6 +6,7 @@
 // implementations do), measured in the same run.
 #include "experiments/io/mesh_file.hpp"
 #include "experiments/shapes/curl.hpp"
+#include "experiments/shapes/grid.hpp"
 #include "theory/global/constraint_terms.hpp"
 #include "theory/global/frame_assembly.hpp"
 #include "theory/global/interpolation.hpp"
@@ -35,13 +36,7 @@ global::Mesh generated_strip(int cols, int rows) {
   mesh.vertices.resize(2, (cols + 1) * (rows + 1));
   for (int j = 0; j <= rows; ++j)
     for (int i = 0; i <= cols; ++i) mesh.vertices.col(j * (cols + 1) + i) = Eigen::Vector2d(i, j) / rows;
-  mesh.triangles.resize(3, 2 * cols * rows);
-  for (int j = 0, t = 0; j < rows; ++j)
-    for (int i = 0; i < cols; ++i) {
-      const int a = j * (cols + 1) + i, b = a + 1, c = a + cols + 1, d = c + 1;
-      mesh.triangles.col(t++) = Eigen::Vector3i(a, b, d);
-      mesh.triangles.col(t++) = Eigen::Vector3i(a, d, c);
-    }
+  mesh.triangles = shapes::grid_triangles(cols, rows);
   return mesh;
 }
 

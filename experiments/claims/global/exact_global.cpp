@@ -1,6 +1,7 @@
 #include "experiments/claims/global/exact_global.hpp"
 
 #include "experiments/claims/values.hpp"
+#include "experiments/shapes/grid.hpp"
 
 #include <stdexcept>
 #include <utility>
@@ -50,14 +51,7 @@ RationalMeshPair random_rational_pair(Rng& rng, int cols, int rows) {
         mesh.Q.col(k) = L.lazyProduct(mesh.P.col(k));
         for (int r = 0; r < 2; ++r) mesh.Q(r, k) += Rational(rng.integer(-2, 2)) / 8;
       }
-    mesh.triangles.resize(3, 2 * cols * rows);
-    int t = 0;
-    for (int j = 0; j < rows; ++j)
-      for (int i = 0; i < cols; ++i) {
-        const int a = j * (cols + 1) + i, b = a + 1, c = a + cols + 1, d = c + 1;
-        mesh.triangles.col(t++) = Eigen::Vector3i(a, b, d);
-        mesh.triangles.col(t++) = Eigen::Vector3i(a, d, c);
-      }
+    mesh.triangles = shapes::grid_triangles(cols, rows);
     bool valid = true;
     for (Eigen::Index i = 0; i < mesh.triangles.cols() && valid; ++i) {
       const auto p = mesh.corners(mesh.P, i);
