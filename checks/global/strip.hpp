@@ -8,6 +8,19 @@
 
 namespace affinterp::global::testing {
 
+/// Two counter-clockwise triangles on the unit square: (0,1,2) and (0,2,3).
+inline Mesh unit_square() {
+  Mesh mesh;
+  mesh.vertices.resize(2, 4);
+  mesh.vertices << 0, 1, 1, 0,
+                   0, 0, 1, 1;
+  mesh.triangles.resize(3, 2);
+  mesh.triangles << 0, 0,
+                    1, 2,
+                    2, 3;
+  return mesh;
+}
+
 /// A cols × rows grid of unit squares, each split into two counter-clockwise triangles.
 inline Mesh strip(int cols, int rows) {
   Mesh mesh;
