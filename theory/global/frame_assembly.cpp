@@ -1,5 +1,7 @@
 #include "theory/global/frame_assembly.hpp"
 
+#include "theory/global/hermitian_local_error.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -39,13 +41,6 @@ TriangleQuadratic<double> local_error(Energy energy, const TriangleTerm& term, c
   return {};
 }
 
-/// The linear term of E_i: only E^F's share has one (E^R and E^S are pure quadratic forms).
-Eigen::Matrix<double, 6, 1> local_error_linear_term(Energy energy, const TriangleTerm& term, const Eigen::Matrix2d& A) {
-  if (energy == Energy::frobenius || energy == Energy::blend)
-    return frobenius_linear_term(term.D, A) * (term.weight * term.frobenius_share);
-  return Eigen::Matrix<double, 6, 1>::Zero();
-}
-
 }  // namespace
 
 FrameAssembly::FrameAssembly(const Mesh& source, const Mesh& target, const InterpolationOptions& options,
@@ -73,22 +68,18 @@ TriangleQuadratic<double> FrameAssembly::triangle_quadratic(Eigen::Index i, doub
 }
 
 void FrameAssembly::build_pattern() {
-  const int d = isotropic_ ? 1 : 2;  // unknowns per vertex in the assembled matrix
-  const Eigen::Index size = d * n_;
-  std::vector<Eigen::Triplet<double>> entries;
+  std::vector<Eigen::Triplet<std::complex<double>>> entries;
   auto lower = [&](Eigen::Index row, Eigen::Index col) {
     if (row >= col) entries.emplace_back(row, col, 0.0);
   };
   for (const TriangleTerm& term : forward_terms_)
-    for (int a = 0; a < 3 * d; ++a)
-      for (int b = 0; b < 3 * d; ++b)
-        lower(d * term.vertex[static_cast<std::size_t>(a / d)] + a % d, d * term.vertex[static_cast<std::size_t>(b / d)] + b % d);
+    for (const Eigen::Index k : term.vertex)
+      for (const Eigen::Index l : term.vertex) lower(k, l);
   for (const ConstraintTerm& term : constraints_)
     if (!term.dense())
       for (const auto& [k, alpha_k] : term.coefficients)
-        for (const auto& [l, alpha_l] : term.coefficients)
-          for (int r = 0; r < d; ++r) lower(d * k + r, d * l + r);
-  matrix_.resize(size, size);
+        for (const auto& [l, alpha_l] : term.coefficients) lower(k, l);
+  matrix_.resize(n_, n_);
   matrix_.setFromTriplets(entries.begin(), entries.end());
   matrix_.makeCompressed();
 
@@ -97,83 +88,78 @@ void FrameAssembly::build_pattern() {
     const int* end = matrix_.innerIndexPtr() + matrix_.outerIndexPtr()[col + 1];
     return static_cast<int>(std::lower_bound(begin, end, static_cast<int>(row)) - matrix_.innerIndexPtr());
   };
-  triangle_slots_.assign(36 * forward_terms_.size(), -1);
+  triangle_slots_.assign(9 * forward_terms_.size(), -1);
   for (std::size_t i = 0; i < forward_terms_.size(); ++i)
-    for (int a = 0; a < 3 * d; ++a)
-      for (int b = 0; b < 3 * d; ++b) {
-        const Eigen::Index row = d * forward_terms_[i].vertex[static_cast<std::size_t>(a / d)] + a % d;
-        const Eigen::Index col = d * forward_terms_[i].vertex[static_cast<std::size_t>(b / d)] + b % d;
-        if (row >= col) triangle_slots_[36 * i + static_cast<std::size_t>(6 * a + b)] = slot(row, col);
-      }
+    for (std::size_t a = 0; a < 3; ++a)
+      for (std::size_t b = 0; b < 3; ++b)
+        if (const Eigen::Index row = forward_terms_[i].vertex[a], col = forward_terms_[i].vertex[b]; row >= col)
+          triangle_slots_[9 * i + 3 * a + b] = slot(row, col);
 
   constant_values_.assign(static_cast<std::size_t>(matrix_.nonZeros()), 0.0);
   for (const ConstraintTerm& term : constraints_)
     if (!term.dense())
       for (const auto& [k, alpha_k] : term.coefficients)
         for (const auto& [l, alpha_l] : term.coefficients)
-          for (int r = 0; r < d; ++r)
-            if (k >= l) constant_values_[static_cast<std::size_t>(slot(d * k + r, d * l + r))] += term.weight * alpha_k * alpha_l;
+          if (k >= l) constant_values_[static_cast<std::size_t>(slot(k, l))] += term.weight * alpha_k * alpha_l;
 
-  // A dense term c ‖Σ α_k v_k − r‖² (the barycentre) is c (α αᵀ ⊗ I₂): columns α ⊗ e_r of U. K is
-  // grounded at vertex 0 (+g on its diagonal, −g in U diag(c) Uᵀ) so that K stays definite even when the
-  // dense term is the only one fixing translation.
+  // A dense term c |Σ α_k z_k − r|² (the barycentre) is c α αᵀ: a column α of U. H is grounded at vertex 0
+  // (+g on its diagonal, −g in U diag(c) Uᵀ) so that it stays definite even when the dense term is the
+  // only one fixing translation.
   std::vector<Eigen::VectorXd> columns;
   std::vector<double> weights;
   for (const ConstraintTerm& term : constraints_)
-    if (term.dense())
-      for (int r = 0; r < d; ++r) {
-        Eigen::VectorXd column = Eigen::VectorXd::Zero(size);
-        for (const auto& [k, alpha_k] : term.coefficients) column[d * k + r] = alpha_k;
-        columns.push_back(column), weights.push_back(term.weight);
-      }
-  if (!columns.empty()) {
-    double grounding = 0;  // comparable to a triangle's diagonal entries
-    for (const TriangleTerm& term : forward_terms_) grounding += 2 * term.weight * term.D.squaredNorm();  // tr MᵀM
-    grounding /= static_cast<double>(size);
-    for (int r = 0; r < d; ++r) {
-      constant_values_[static_cast<std::size_t>(slot(r, r))] += grounding;
-      columns.push_back(Eigen::VectorXd::Unit(size, r)), weights.push_back(-grounding);
+    if (term.dense()) {
+      Eigen::VectorXd column = Eigen::VectorXd::Zero(n_);
+      for (const auto& [k, alpha_k] : term.coefficients) column[k] = alpha_k;
+      columns.push_back(column), weights.push_back(term.weight);
     }
+  if (!columns.empty()) {
+    double grounding = 0;  // the mean diagonal entry of E^F's L, comparable to a triangle's diagonal entries
+    for (const TriangleTerm& term : forward_terms_) grounding += term.weight * term.D.squaredNorm();  // tr DDᵀ
+    grounding /= static_cast<double>(n_);
+    constant_values_[static_cast<std::size_t>(slot(0, 0))] += grounding;
+    columns.push_back(Eigen::VectorXd::Unit(n_, 0)), weights.push_back(-grounding);
   }
-  U_.resize(size, static_cast<Eigen::Index>(columns.size()));
+  U_.resize(n_, static_cast<Eigen::Index>(columns.size()));
   for (std::size_t j = 0; j < columns.size(); ++j) U_.col(static_cast<Eigen::Index>(j)) = columns[j];
   c_ = Eigen::Map<const Eigen::VectorXd>(weights.data(), static_cast<Eigen::Index>(weights.size()));
 }
 
 const FrameAssembly::SparseMatrix& FrameAssembly::matrix_at(double t) {
-  if (isotropic_ && assembled_once_) return matrix_;  // G = L ⊗ I₂ does not involve A_i(t)
-  Eigen::Map<Eigen::VectorXd> values(matrix_.valuePtr(), matrix_.nonZeros());
-  values = Eigen::Map<const Eigen::VectorXd>(constant_values_.data(), matrix_.nonZeros());
-  const int d = isotropic_ ? 1 : 2;
-  const int stride = 2 / d;  // isotropic: L's entries are H's x-x entries
+  if (isotropic_ && assembled_once_) return matrix_;  // H = L does not involve A_i(t)
+  std::complex<double>* values = matrix_.valuePtr();
+  for (Eigen::Index s = 0; s < matrix_.nonZeros(); ++s) values[s] = constant_values_[static_cast<std::size_t>(s)];
+  auto add = [&](const TriangleTerm& term, const Eigen::Matrix2d& A, const int* slots) {
+    const Eigen::Matrix3cd H = hermitian_local_error(energy_, term.D, term.corners, A, term.frobenius_share).H * term.weight;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        if (const int s = slots[3 * a + b]; s >= 0) values[s] += H(a, b);
+  };
   for (std::size_t i = 0; i < forward_terms_.size(); ++i) {
-    const TriangleQuadratic<double> q = triangle_quadratic(static_cast<Eigen::Index>(i), t);
-    const int* slots = triangle_slots_.data() + 36 * i;
-    for (int a = 0; a < 3 * d; ++a)
-      for (int b = 0; b < 3 * d; ++b)
-        if (const int s = slots[6 * a + b]; s >= 0) values[s] += q.H(stride * a, stride * b);
+    const int* slots = triangle_slots_.data() + 9 * i;
+    add(forward_terms_[i], forward_.at(static_cast<Eigen::Index>(i), t), slots);
+    if (reverse_) add(reverse_terms_[i], reverse_->at(static_cast<Eigen::Index>(i), 1 - t), slots);  // E^{-1}(1 − t)
   }
   assembled_once_ = true;
   return matrix_;
 }
 
-Eigen::MatrixXd FrameAssembly::right_hand_side_at(double t) const {
-  Eigen::VectorXd u = Eigen::VectorXd::Zero(2 * n_);
+Eigen::VectorXcd FrameAssembly::right_hand_side_at(double t) const {
+  Eigen::VectorXcd u = Eigen::VectorXcd::Zero(n_);
   auto add = [&](const std::vector<TriangleTerm>& terms, const LocalPaths& paths, double s) {
+    if (energy_ != Energy::frobenius && energy_ != Energy::blend) return;  // E^R and E^S have no linear part
     for (std::size_t i = 0; i < terms.size(); ++i) {
-      const Eigen::Matrix<double, 6, 1> g = local_error_linear_term(energy_, terms[i], paths.at(static_cast<Eigen::Index>(i), s));
-      for (int c = 0; c < 3; ++c) u.segment<2>(2 * terms[i].vertex[static_cast<std::size_t>(c)]) += g.segment<2>(2 * c);
+      const Eigen::Vector3cd g = hermitian_frobenius_linear_term(terms[i].D, paths.at(static_cast<Eigen::Index>(i), s));
+      for (std::size_t c = 0; c < 3; ++c) u[terms[i].vertex[c]] += terms[i].weight * terms[i].frobenius_share * g[static_cast<Eigen::Index>(c)];
     }
   };
   add(forward_terms_, forward_, t);
   if (reverse_) add(reverse_terms_, *reverse_, 1 - t);
-  for (const ConstraintTerm& term : constraints_) {  // c ‖Σ α_k v_k − r‖²: linear part −2 c α_k r
+  for (const ConstraintTerm& term : constraints_) {  // c |Σ α_k z_k − r|²: linear part Re((−2 c α_k r)* z_k)
     const Eigen::Vector2d r = term.target(t);
-    for (const auto& [k, alpha_k] : term.coefficients) u.segment<2>(2 * k) -= 2 * term.weight * alpha_k * r;
+    for (const auto& [k, alpha_k] : term.coefficients) u[k] -= 2 * term.weight * alpha_k * std::complex<double>(r.x(), r.y());
   }
-  u *= -0.5;
-  if (!isotropic_) return u;
-  return Eigen::Map<const Eigen::MatrixXd>(u.data(), 2, n_).transpose();
+  return u * -0.5;
 }
 
 FrameQuadratic FrameAssembly::dense_quadratic_at(double t) const {

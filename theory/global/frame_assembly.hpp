@@ -1,11 +1,12 @@
 #pragma once
-// The quadratic form vᵀ G(t) v + vᵀ u(t) + c(t) of the global error function at time t (Kaji Appendix,
-// "Efficiency"): the local errors of all triangles — and, for the symmetrised energy, those of the
-// reverse problem Q → P at time 1 − t — plus the constraint terms.
+// The quadratic form of the global error function at time t (Kaji Appendix, "Efficiency"): the local
+// errors of all triangles — and, for the symmetrised energy, those of the reverse problem Q → P at
+// time 1 − t — plus the constraint terms, in the complex form z*H(t)z + Re(ũ(t)*z) + c(t) of
+// hermitian_form.hpp (z_k = v_kx + i v_ky).
 //
-// When every triangle's error is E^F, G = L ⊗ I₂ (x and y decouple, and G does not involve A_i(t)), so
-// the n × n matrix L is assembled once; otherwise G(t) is the full 2n × 2n matrix over the unknowns
-// (v_1x, v_1y, …), with a fixed sparsity pattern whose value slots are precomputed.
+// When every triangle's error is E^F, H = L is real and does not involve A_i(t) (G = L ⊗ I₂): it is
+// assembled once. Otherwise H(t) is refilled for each t in a fixed sparsity pattern whose value slots
+// are precomputed.
 #include "theory/global/constraint_terms.hpp"
 #include "theory/global/local_error.hpp"
 #include "theory/global/local_paths.hpp"
@@ -13,6 +14,7 @@
 #include <Eigen/SparseCore>
 
 #include <array>
+#include <complex>
 #include <vector>
 
 namespace affinterp::global {
@@ -28,29 +30,28 @@ struct TriangleTerm {
 
 class FrameAssembly {
  public:
-  using SparseMatrix = Eigen::SparseMatrix<double>;
+  using SparseMatrix = Eigen::SparseMatrix<std::complex<double>>;
 
   /// `reverse` (the reverse problem's local paths) only for the symmetrised energy.
   FrameAssembly(const Mesh& source, const Mesh& target, const InterpolationOptions& options, const LocalPaths& forward,
                 const LocalPaths* reverse, std::vector<ConstraintTerm> constraints);
 
-  /// G = L ⊗ I₂ for every t; then matrix_at is the n × n L and right_hand_side_at has two columns.
+  /// H is real and the same for every t (no triangle carries an E^R or E^S part).
   bool isotropic() const { return isotropic_; }
-  /// G(t), or L when isotropic, plus `grounding` on the diagonal of vertex 0 (see low_rank_columns).
+  /// The lower triangle of H(t), plus `grounding` on the diagonal of vertex 0 (see low_rank_columns).
   const SparseMatrix& matrix_at(double t);
-  /// −u(t)/2, so that G v = −u/2 at the minimiser: 2n × 1, or n × 2 (x and y columns) when isotropic.
-  Eigen::MatrixXd right_hand_side_at(double t) const;
+  /// −ũ(t)/2, so that H z = −ũ/2 at the minimiser.
+  Eigen::VectorXcd right_hand_side_at(double t) const;
   /// The dense constraint terms (the barycentre) as U diag(c) Uᵀ, minus the grounding added to matrix_at.
   const Eigen::MatrixXd& low_rank_columns() const { return U_; }
   const Eigen::VectorXd& low_rank_weights() const { return c_; }
 
-  /// The whole form at t, dense (for inspection on small meshes).
+  /// The whole form at t, real and dense (for inspection on small meshes).
   FrameQuadratic dense_quadratic_at(double t) const;
 
  private:
   TriangleQuadratic<double> triangle_quadratic(Eigen::Index i, double t) const;
   void build_pattern();
-  void add_constraint_quadratic(std::vector<double>& values) const;
 
   Energy energy_;
   Eigen::Index n_;
@@ -60,8 +61,8 @@ class FrameAssembly {
   std::vector<TriangleTerm> forward_terms_, reverse_terms_;
   std::vector<ConstraintTerm> constraints_;
   SparseMatrix matrix_;
-  std::vector<int> triangle_slots_;      ///< per triangle, 36 slots into matrix_'s values (−1: upper half)
-  std::vector<double> constant_values_;  ///< the constraint terms and the grounding
+  std::vector<int> triangle_slots_;      ///< per triangle, 9 slots into matrix_'s values (−1: upper half)
+  std::vector<double> constant_values_;  ///< the constraint terms and the grounding (real)
   Eigen::MatrixXd U_;
   Eigen::VectorXd c_;
   bool assembled_once_ = false;

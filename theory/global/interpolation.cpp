@@ -90,8 +90,10 @@ struct Interpolation::Engine {
   LocalPaths forward;
   std::optional<LocalPaths> reverse;  // the reverse problem Q → P, for E′(t) = E(t) + E^{-1}(1 − t)
   std::optional<FrameAssembly> assembly;
-  mutable SparseMinimiser minimiser;
-  bool factored = false;
+  /// H = L real and fixed: factored once, x and y solved as two real columns.
+  SparseMinimiser<double> fixed;
+  /// H(t) complex Hermitian: its pattern analysed once, refactorised per frame.
+  mutable SparseMinimiser<std::complex<double>> per_frame;
 
   Engine(const Mesh& source, const Mesh& target, InterpolationOptions opts, const Eigen::VectorXd& theta)
       : options(std::move(opts)), forward(linear_parts(source, target), options.homotopy, theta) {
@@ -99,10 +101,15 @@ struct Interpolation::Engine {
     auto terms = constraint_terms(options.constraints, source, target, forward);
     require_well_posed(source, terms, !has_frobenius_part(options), "E^" + to_string(options.energy));
     assembly.emplace(source, target, options, forward, reverse ? &*reverse : nullptr, std::move(terms));
-    const auto& K = assembly->matrix_at(options.t_begin);
-    minimiser.analyse(K);
-    minimiser.factorise(K, assembly->low_rank_columns(), assembly->low_rank_weights());
-    factored = true;
+    const auto& H = assembly->matrix_at(options.t_begin);
+    if (assembly->isotropic()) {
+      const Eigen::SparseMatrix<double> L = H.real();
+      fixed.analyse(L);
+      fixed.factorise(L, assembly->low_rank_columns(), assembly->low_rank_weights());
+    } else {
+      per_frame.analyse(H);
+      per_frame.factorise(H, assembly->low_rank_columns(), assembly->low_rank_weights());
+    }
   }
 };
 
@@ -126,11 +133,18 @@ Eigen::Matrix2Xd Interpolation::vertices_at(double t) const {
     throw std::out_of_range("t = " + std::to_string(t) + " is outside the time range [" + std::to_string(o.t_begin) +
                             ", " + std::to_string(o.t_end) + "]");
   FrameAssembly& assembly = *engine_->assembly;
-  if (!assembly.isotropic())  // G(t) changes with A_i(t): a numeric factorisation per frame
-    engine_->minimiser.factorise(assembly.matrix_at(t), assembly.low_rank_columns(), assembly.low_rank_weights());
-  const Eigen::MatrixXd v = engine_->minimiser.solve(assembly.right_hand_side_at(t));
-  if (assembly.isotropic()) return v.transpose();
-  return Eigen::Map<const Eigen::Matrix2Xd>(v.data(), 2, v.rows() / 2);
+  const Eigen::VectorXcd b = assembly.right_hand_side_at(t);
+  if (assembly.isotropic()) {  // L [x y] = [Re b, Im b]
+    Eigen::MatrixXd xy(b.size(), 2);
+    xy << b.real(), b.imag();
+    return engine_->fixed.solve(xy).transpose();
+  }
+  // H(t) changes with A_i(t): a numeric factorisation per frame
+  engine_->per_frame.factorise(assembly.matrix_at(t), assembly.low_rank_columns(), assembly.low_rank_weights());
+  const Eigen::VectorXcd z = engine_->per_frame.solve(b);
+  Eigen::Matrix2Xd v(2, z.size());
+  v << z.real().transpose(), z.imag().transpose();
+  return v;
 }
 
 FrameQuadratic Interpolation::quadratic_at(double t) const { return engine_->assembly->dense_quadratic_at(t); }

@@ -5,7 +5,8 @@
 // where A_i(t) is the local homotopy of triangle τ_i (Kaji §3), B_i(t) the linear part of B(t) on τ_i
 // (linear in the v_k by eq. (1)), E_i a local error function and C a quadratic constraint function.
 // E_t is the quadratic form vᵀ G(t) v + vᵀ u(t) + c (Kaji Appendix, "Efficiency"), minimised by
-// solving 2 G(t) v = −u(t) with a sparse Cholesky factorisation.
+// solving 2 G(t) v = −u(t) — as the n × n complex Hermitian system H(t) z = −ũ(t)/2 of hermitian_form.hpp —
+// with a sparse Cholesky factorisation.
 #include "theory/global/mesh.hpp"
 
 #include <Eigen/Core>

@@ -1,0 +1,56 @@
+#pragma once
+// The local errors of local_error.hpp in the complex form of hermitian_form.hpp: over a triangle's complex
+// vertices z = (z_0, z_1, z_2), E_i = z*Hz + Re(ũ*z) + c. Write μ_k for the complex number of the vector
+// A D_kᵀ (A applied to the k-th row of D, B = V D), so that vec A's inner product with B's k-th term is
+// Re(μ̄_k z_k) and vec JA's is Im(μ̄_k z_k). Then (the real forms' H, read through hermitian_block):
+//     E^F:  H = D Dᵀ,                    ũ = −2μ      (‖B‖² = z*DDᵀz, −2⟨A, B⟩ = Re((−2μ)*z));
+//     E^R:  H = D Dᵀ − μμ*/‖A‖²,         ũ = 0        (⟨A, B⟩² + ⟨JA, B⟩² = |μ*z|²);
+//     E^S:  H = Π − x x*/‖X‖²,           ũ = 0        (x_k = the complex number of A p̃_k, Π = I − 𝟙𝟙ᵀ/3);
+//     blend: w E^F + (1 − w) E^R.
+// E^R (E^S) is the squared distance of B from the complex line {λA : λ ∈ C} (of Y from {λX}): it removes
+// one complex dimension, the rank-2 real projection behind kaji.er.positive-definite.
+#include "theory/global/interpolation.hpp"
+
+#include <Eigen/Core>
+
+#include <complex>
+
+namespace affinterp::global {
+
+struct HermitianTriangleForm {
+  Eigen::Matrix3cd H;
+  Eigen::Vector3cd u;  ///< ũ
+};
+
+namespace detail {
+inline Eigen::Vector3cd complex_columns(const Eigen::Matrix<double, 2, 3>& X) {
+  return Eigen::Vector3cd({X(0, 0), X(1, 0)}, {X(0, 1), X(1, 1)}, {X(0, 2), X(1, 2)});
+}
+}  // namespace detail
+
+/// ũ = −2μ of E^F.
+inline Eigen::Vector3cd hermitian_frobenius_linear_term(const Eigen::Matrix<double, 3, 2>& D, const Eigen::Matrix2d& A) {
+  return -2.0 * detail::complex_columns(A * D.transpose());
+}
+
+/// One triangle's E^F, E^R or blend (w the E^F share), or E^S from its corners p.
+inline HermitianTriangleForm hermitian_local_error(Energy energy, const Eigen::Matrix<double, 3, 2>& D,
+                                                   const Eigen::Matrix<double, 2, 3>& p, const Eigen::Matrix2d& A,
+                                                   double w) {
+  HermitianTriangleForm form{Eigen::Matrix3cd::Zero(), Eigen::Vector3cd::Zero()};
+  if (energy == Energy::procrustes) {
+    const Eigen::Matrix<double, 2, 3> centred = p.colwise() - p.rowwise().mean();
+    const Eigen::Vector3cd x = detail::complex_columns(A * centred);
+    form.H.real() = Eigen::Matrix3d::Identity() - Eigen::Matrix3d::Constant(1.0 / 3);
+    form.H -= x * x.adjoint() / x.squaredNorm();
+    return form;
+  }
+  const double frobenius_share = energy == Energy::frobenius ? 1.0 : energy == Energy::blend ? w : 0.0;
+  const Eigen::Vector3cd mu = detail::complex_columns(A * D.transpose());
+  form.H.real() = D * D.transpose();
+  if (frobenius_share < 1.0) form.H -= (1.0 - frobenius_share) / A.squaredNorm() * (mu * mu.adjoint());
+  if (frobenius_share > 0.0) form.u = -2.0 * frobenius_share * mu;
+  return form;
+}
+
+}  // namespace affinterp::global
