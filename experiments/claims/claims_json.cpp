@@ -1,6 +1,7 @@
 #include "experiments/claims/claims_json.hpp"
 
 #include "experiments/claims/catalogue.hpp"
+#include "experiments/claims/engine_speed.hpp"
 
 #include <chrono>
 #include <ctime>
@@ -69,6 +70,7 @@ nlohmann::json claims_document(const std::vector<ClaimResult>& results, const Ru
       {"size", to_string(context.size)},
       {"environment", environment},
       {"claims", claims},
+      {"engine_speed", engine_speed(context.bench_dir / "bench_interp.json")},
   };
 }
 

@@ -1,6 +1,6 @@
 #include "experiments/claims/sym3/speed.hpp"
 
-#include "experiments/claims/sym3/bench_results.hpp"
+#include "experiments/claims/bench_results.hpp"
 #include "experiments/sym3/demo_mesh.hpp"
 #include "plots/figure.hpp"
 

@@ -1,12 +1,12 @@
 #pragma once
 // Reading the Google Benchmark JSON written by build/bin/bench_* (experiments/reproduce.sh stores it in
-// reports/bench/), for the speed claims of thesis §3.4.
+// reports/bench/), for the speed claims of thesis §3.4 and the global engine's speed table.
 #include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
 
-namespace affinterp::claims::sym3 {
+namespace affinterp::claims {
 
 struct BenchResults {
   std::filesystem::path file;
@@ -25,4 +25,4 @@ struct BenchResults {
 /// absent. Throws std::runtime_error when it is not a Google Benchmark JSON file.
 std::optional<BenchResults> read_bench_results(const std::filesystem::path& file, const std::string& counter);
 
-}  // namespace affinterp::claims::sym3
+}  // namespace affinterp::claims

@@ -1,4 +1,4 @@
-#include "experiments/claims/sym3/bench_results.hpp"
+#include "experiments/claims/bench_results.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -6,7 +6,7 @@
 #include <fstream>
 #include <stdexcept>
 
-namespace affinterp::claims::sym3 {
+namespace affinterp::claims {
 
 namespace {
 
@@ -66,4 +66,4 @@ std::optional<BenchResults> read_bench_results(const std::filesystem::path& file
   return results;
 }
 
-}  // namespace affinterp::claims::sym3
+}  // namespace affinterp::claims

@@ -1,0 +1,17 @@
+#pragma once
+// The global engine's speed table for the report, from one run of build/bin/bench_interp (Kaji Appendix,
+// "Efficiency"): per energy the set-up time, the time per frame after set-up and, where measured, the
+// refactor-every-frame baseline of the same run, against the targets of the engine's specification —
+// E^F ≥ 150 frames/s, E^R ≥ 25 frames/s, set-up ≤ 0.2 s, all single-threaded.
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+
+namespace affinterp::claims {
+
+/// {"file", "machine", "compiler", "flags", "mesh", "triangles", "rows": [{"energy", "setup_ms",
+/// "setup_target_ms", "frame_ms", "frames_per_s", "target_frames_per_s" (null: none), "baseline_ms"
+/// (null: not measured), "speedup_vs_baseline", "met"}]}; null when `bench_file` does not exist.
+nlohmann::json engine_speed(const std::filesystem::path& bench_file);
+
+}  // namespace affinterp::claims
