@@ -41,8 +41,8 @@ enum class RotationBranch {
   consistent,  ///< breadth-first over the dual graph from triangle 0: θ_j + 2πk_j within π of its parent's
 };
 
-/// Vertex `vertex` should trace u(t): the uniform Catmull–Rom spline through `points` at
-/// t = 0, 1/(N−1), …, 1 (two points: the straight segment). Adds c ‖u(t) − v(t)‖² (Kaji §4).
+/// Vertex `vertex` should trace u(t): the interpolating B-spline through `points` at t = 0, 1/(N−1), …, 1
+/// (locus.hpp; two points: the straight segment). Adds c ‖u(t) − v(t)‖² (Kaji §4).
 struct VertexLocus {
   Eigen::Index vertex = 0;
   Eigen::Matrix2Xd points;
@@ -67,7 +67,7 @@ struct EdgeDirection {
   double weight = 1.0;
 };
 
-/// The barycentre Σ v_k / n should trace u_o(t): Catmull–Rom through `points` as for VertexLocus; no
+/// The barycentre Σ v_k / n should trace u_o(t): the B-spline through `points` as for VertexLocus; no
 /// points means the straight line from the source's to the target's barycentre. Adds c_o ‖Σv/n − u_o‖².
 struct BarycentreLocus {
   Eigen::Matrix2Xd points;

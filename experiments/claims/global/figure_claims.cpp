@@ -35,7 +35,7 @@ InterpolationOptions options_for(Energy energy, global::Constraints constraints)
 
 /// Fig 2 / Fig 4's input: the man (rest → "wave") with the loci of the head's top and the lowest foot
 /// vertex swung a quarter turn about the shape's centre half-way: u_k(t) through p_k, R_{π/2}-turned
-/// midpoint, q_k (Catmull–Rom).
+/// midpoint, q_k (the interpolating B-spline of locus.hpp).
 struct LociSetup {
   shapes::MeshPairShapes pair;
   global::Constraints constraints;
