@@ -2,7 +2,9 @@
 
 #include "plots/figure.hpp"
 #include "plots/gnuplot_process.hpp"
+#include "plots/mesh_overlay.hpp"
 #include "plots/mesh_strip.hpp"
+#include "theory/global/locus.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -80,6 +82,45 @@ std::vector<std::string> draw_animations(const RunContext& ctx, const std::strin
                          .render();
   for (const auto& file : files)
     if (file.ends_with(".png")) refs.push_back(RunContext::figure_ref(file));
+  return refs;
+}
+
+double worst_locus_distance(const Animation& animation, const std::vector<global::VertexLocus>& loci) {
+  double worst = 0;
+  for (const auto& locus : loci) {
+    const global::Locus u(locus.points);
+    for (std::size_t k = 0; k < animation.t.size(); ++k)
+      worst = std::max(worst, (animation.frames[k].col(locus.vertex) - u.at(animation.t[k])).norm());
+  }
+  return worst;
+}
+
+std::vector<std::string> draw_loci_overlays(const RunContext& ctx, const std::string& name, const global::Mesh& source,
+                                            const std::vector<Animation>& animations,
+                                            const std::vector<global::VertexLocus>& loci,
+                                            const std::vector<int>& shown_frames, const std::string& title) {
+  std::vector<std::string> refs;
+  for (std::size_t a = 0; a < animations.size(); ++a) {
+    const Animation& animation = animations[a];
+    std::vector<plots::MeshFrame> frames;
+    for (const int k : shown_frames) frames.push_back({animation.frames[static_cast<std::size_t>(k)], ""});
+    std::vector<plots::Curve> curves;
+    for (std::size_t l = 0; l < loci.size(); ++l) {
+      const bool first = l == 0;
+      const global::Locus u(loci[l].points);
+      Eigen::Matrix2Xd prescribed(2, 101), taken(2, static_cast<Eigen::Index>(animation.t.size()));
+      for (Eigen::Index j = 0; j < prescribed.cols(); ++j) prescribed.col(j) = u.at(static_cast<double>(j) / 100);
+      for (std::size_t k = 0; k < animation.t.size(); ++k)
+        taken.col(static_cast<Eigen::Index>(k)) = animation.frames[k].col(loci[l].vertex);
+      curves.push_back({prescribed, first ? "prescribed locus u_k(t)" : "", "with lines lc rgb '#e08000' lw 2.5"});
+      curves.push_back({loci[l].points, first ? "its points" : "", "with points pt 7 ps 1.3 lc rgb '#e08000'"});
+      curves.push_back({taken, first ? "path of v_k(t)" : "", "with lines lc rgb '#000000' lw 1.2 dt 2"});
+    }
+    const std::string stem = name + "-loci-" + std::to_string(a + 1);
+    for (const auto& file : plots::draw_overlay(ctx.figure_stem(stem), source.triangles, frames, curves,
+                                                title + ": " + animation.label + " (frames light to dark in time)"))
+      if (file.ends_with(".png")) refs.push_back(RunContext::figure_ref(std::filesystem::path(file).filename().string()));
+  }
   return refs;
 }
 

@@ -33,4 +33,14 @@ std::vector<std::string> draw_animations(const RunContext& ctx, const std::strin
                                          const std::vector<Animation>& animations, const std::vector<int>& shown_frames,
                                          const std::string& title);
 
+/// The largest distance over frames and loci between a locus vertex v_k(t) and its prescribed u_k(t).
+double worst_locus_distance(const Animation& animation, const std::vector<global::VertexLocus>& loci);
+
+/// Draws, per animation, the frames at `shown_frames` superimposed with each prescribed locus u_k(t) (its
+/// points marked) and the path v_k(t) the vertex took over all frames; returns the figure references.
+std::vector<std::string> draw_loci_overlays(const RunContext& ctx, const std::string& name, const global::Mesh& source,
+                                            const std::vector<Animation>& animations,
+                                            const std::vector<global::VertexLocus>& loci,
+                                            const std::vector<int>& shown_frames, const std::string& title);
+
 }  // namespace affinterp::claims::global_figures

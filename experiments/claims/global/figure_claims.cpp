@@ -75,16 +75,24 @@ Outcome fig2_vs_fig4(const RunContext& ctx) {
                 std::to_string(R.most_flips()) + " flipped)";
   out.evidence.method = "per-frame metrics of E^F and E^R interpolations (exp homotopy) of the generated man, rest → wave";
   out.evidence.sample_size = static_cast<std::uint64_t>(2 * frames);
-  out.evidence.details = {{"E^F", summary_of(F)}, {"E^R", summary_of(R)},
+  nlohmann::json F_details = summary_of(F), R_details = summary_of(R);
+  F_details["worst_distance_from_prescribed_locus"] = global_figures::worst_locus_distance(F, setup.constraints.loci);
+  R_details["worst_distance_from_prescribed_locus"] = global_figures::worst_locus_distance(R, setup.constraints.loci);
+  out.evidence.details = {{"E^F", F_details}, {"E^R", R_details},
                           {"setup", "loci on the top-most and bottom-most vertices through p, the midpoint turned by π/2 "
                                     "about the centre, and q; weight c = 1000; exp homotopy; consistent rotation branch"},
                           {"rule", "fails = a flipped triangle or min det B_i(t) < 0.1 in some frame; the claim holds "
                                    "when E^F fails and E^R does not"}};
   if (!reproduced)
     out.counterexample = {{"shape", "man-wave"}, {"E^F", summary_of(F)}, {"E^R", summary_of(R)}};
-  if (ctx.draws_figures())
-    out.figures = global_figures::draw_animations(ctx, "kaji-fig2-fig4", P, {F, R}, {0, frames / 4, frames / 2, 3 * frames / 4, frames - 1},
-                                                  "Kaji Figs 2/4: vertex loci, E^F vs E^R");
+  if (ctx.draws_figures()) {
+    const std::vector<int> shown{0, frames / 4, frames / 2, 3 * frames / 4, frames - 1};
+    out.figures = global_figures::draw_loci_overlays(ctx, "kaji-fig2-fig4", P, {F, R}, setup.constraints.loci, shown,
+                                                     "Kaji Figs 2/4");
+    for (auto& ref : global_figures::draw_animations(ctx, "kaji-fig2-fig4", P, {F, R}, shown,
+                                                     "Kaji Figs 2/4: vertex loci, E^F vs E^R"))
+      out.figures.push_back(std::move(ref));
+  }
   return out;
 }
 
