@@ -4,6 +4,7 @@
 #include <chrono>
 #include <iomanip>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 
 namespace affinterp::claims {
@@ -22,8 +23,9 @@ std::vector<ClaimResult> run_claims(const CheckRegistry& registry, const RunCont
   for (const ClaimInfo* info : selected) {
     ++index;
     ClaimResult result{info, {}, 0, {}};
-    progress << "[" << std::setw(2) << index << "/" << selected.size() << "] " << info->id << " ... "
-             << std::flush;
+    std::ostringstream line;
+    line << "[" << std::setw(2) << index << "/" << selected.size() << "] " << info->id << " ... ";
+    progress << line.str() << std::flush;
     if (const Check* check = registry.find(info->id)) {
       const auto start = std::chrono::steady_clock::now();
       try {
@@ -35,6 +37,7 @@ std::vector<ClaimResult> run_claims(const CheckRegistry& registry, const RunCont
     } else {
       result.outcome.summary = "no check implemented yet";
     }
+    progress << "\r" << line.str();  // a check's Progress may have overwritten the line meanwhile
     if (result.error.empty())
       progress << to_string(result.outcome.verdict) << " (" << std::fixed << std::setprecision(2)
                << result.seconds << " s)\n";

@@ -1,5 +1,7 @@
 #pragma once
-// Progress of a long loop on standard error: a percentage that advances in place.
+// Progress of a long loop on standard error: a percentage that advances in place on the current line,
+// and is wiped when the loop ends, so that whoever owns the line (the claims runner's "[i/n] id ...")
+// can rewrite it with the result.
 #include <atomic>
 #include <cstddef>
 #include <iostream>
@@ -11,7 +13,7 @@ class Progress {
  public:
   Progress(std::string label, std::size_t total) : label_(std::move(label)), total_(total) {}
   ~Progress() {
-    if (shown_ >= 0) std::cerr << "\r" << label_ << ": 100%  \n" << std::flush;
+    if (shown_ >= 0) std::cerr << "\r" << std::string(label_.size() + 8, ' ') << "\r" << std::flush;
   }
   /// Records `count` more units done; thread-safe.
   void advance(std::size_t count = 1) {
