@@ -1,13 +1,13 @@
 #include "theory/origin/frame_interpolation.hpp"
 
 #include "theory/exact/rational.hpp"
+#include "theory/local/exp_log_homotopy.hpp"
 #include "theory/origin/affine_frames.hpp"
 #include "theory/origin/energy.hpp"
 #include "theory/origin/symbols.hpp"
 
-#include <Eigen/Geometry>
+#include <Eigen/LU>
 
-#include <cmath>
 #include <stdexcept>
 
 namespace affinterp::origin {
@@ -38,22 +38,10 @@ Eigen::Matrix3d shift(const Eigen::Vector2d& o) {
   return T;
 }
 
-/// A^E(t) = R_{tθ} S^t for L = R_θ S (Kaji eq. (3)).
+/// A^E(t) = R_{tθ} S^t for L = R_θ S (Kaji eq. (3)), the local theory's exp-log homotopy.
 Eigen::Matrix2d exponential_interpolation(const Eigen::Matrix2d& L, double t) {
   if (!(L.determinant() > 0)) throw std::invalid_argument("local_interpolation: det A must be positive");
-  // The rotation of the polar decomposition: the rotation nearest to L, angle of (l11 + l22, l21 − l12).
-  const double theta = std::atan2(L(1, 0) - L(0, 1), L(0, 0) + L(1, 1));
-  const Eigen::Matrix2d R_theta = Eigen::Rotation2Dd(theta).toRotationMatrix();
-  const Eigen::Matrix2d S = R_theta.transpose() * L;
-  // S^t = λ−^t I + D (S − λ− I) on the eigenvalues λ± = m ± r of the symmetric positive definite S,
-  // with the divided difference D = (λ+^t − λ−^t) / (λ+ − λ−) evaluated without cancellation.
-  const double m = (S(0, 0) + S(1, 1)) / 2, r = std::hypot((S(0, 0) - S(1, 1)) / 2, S(0, 1));
-  const double lambda_minus = m - r;
-  const double D = r == 0 ? t * std::pow(m, t - 1)
-                          : std::pow(lambda_minus, t) * std::expm1(t * std::log1p(2 * r / lambda_minus)) / (2 * r);
-  const Eigen::Matrix2d I = Eigen::Matrix2d::Identity();
-  const Eigen::Matrix2d S_t = std::pow(lambda_minus, t) * I + D * (S - lambda_minus * I);
-  return Eigen::Rotation2Dd(t * theta).toRotationMatrix() * S_t;
+  return local::ExpLogHomotopy<double>::of(L)(t);
 }
 
 }  // namespace
