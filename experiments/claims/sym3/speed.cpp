@@ -51,22 +51,6 @@ Outcome inconclusive(std::string summary, const std::string& method) {
   return outcome;
 }
 
-/// The results of bench_<name>.json, or the reason they cannot be used.
-std::variant<BenchResults, Outcome> load(const RunContext& ctx, const std::string& bench, const std::string& counter,
-                                         const std::string& method) {
-  const std::string run = "run build/bin/" + bench + " --benchmark_out=reports/bench/" + bench +
-                          ".json --benchmark_out_format=json (experiments/reproduce.sh does)";
-  if (ctx.bench_dir.empty()) return inconclusive("no benchmark folder given: " + run, method);
-  std::optional<BenchResults> results;
-  try {
-    results = read_bench_results(ctx.bench_dir / (bench + ".json"), counter);
-  } catch (const std::runtime_error& e) {
-    return inconclusive(std::string("unreadable benchmark output: ") + e.what() + "; " + run, method);
-  }
-  if (!results) return inconclusive((ctx.bench_dir / (bench + ".json")).string() + " is absent: " + run, method);
-  return *results;
-}
-
 /// The missing benchmarks among `names`, as "a, b (error message)"; empty when all ran.
 std::string missing(const BenchResults& results, std::initializer_list<std::string_view> names) {
   std::string list;
@@ -78,6 +62,26 @@ std::string missing(const BenchResults& results, std::initializer_list<std::stri
       list += " (" + error->second + ")";
   }
   return list;
+}
+
+/// The results of bench_<name>.json, or the inconclusive outcome saying why they cannot be used: no
+/// benchmark folder, an absent or unreadable file, or one of `needed` missing from it (`hint` appended).
+std::variant<BenchResults, Outcome> load(const RunContext& ctx, const std::string& bench, const std::string& counter,
+                                         const std::string& method, std::initializer_list<std::string_view> needed,
+                                         const std::string& hint = "") {
+  const std::string run = "run build/bin/" + bench + " --benchmark_out=reports/bench/" + bench +
+                          ".json --benchmark_out_format=json (experiments/reproduce.sh does)";
+  if (ctx.bench_dir.empty()) return inconclusive("no benchmark folder given: " + run, method);
+  std::optional<BenchResults> results;
+  try {
+    results = read_bench_results(ctx.bench_dir / (bench + ".json"), counter);
+  } catch (const std::runtime_error& e) {
+    return inconclusive(std::string("unreadable benchmark output: ") + e.what() + "; " + run, method);
+  }
+  if (!results) return inconclusive((ctx.bench_dir / (bench + ".json")).string() + " is absent: " + run, method);
+  if (auto absent = missing(*results, needed); !absent.empty())
+    return inconclusive("benchmarks missing from " + bench + ".json: " + absent + hint, method);
+  return *results;
 }
 
 bool about(double measured, double paper) {
@@ -133,11 +137,9 @@ Outcome check_eig_speedup(const RunContext& ctx) {
   const std::string method =
       "Google Benchmark bench_exp3: CPU time per matrix (median of repetitions) over 4096 matrices S = MᵀM, "
       "M uniform in [−1, 1], cycled; ratio = time(eigen-qr) / time(viete)";
-  auto loaded = load(ctx, "bench_exp3", "ns_per_matrix", method);
+  auto loaded = load(ctx, "bench_exp3", "ns_per_matrix", method, {kQr, kViete});
   if (auto* outcome = std::get_if<Outcome>(&loaded)) return *outcome;
   const auto& results = std::get<BenchResults>(loaded);
-  if (auto absent = missing(results, {kQr, kViete}); !absent.empty())
-    return inconclusive("benchmarks missing from bench_exp3.json: " + absent, method);
 
   constexpr double paper = 3.2;
   const double ratio = *results[kQr] / *results[kViete];
@@ -171,11 +173,9 @@ Outcome check_exp_speedup(const RunContext& ctx) {
       "Google Benchmark bench_exp3: CPU time per matrix (median of repetitions) over 4096 matrices S = MᵀM, "
       "M uniform in [−1, 1], cycled; Diag = eigen-qr-diag, SD = thesis-sd-corrected, improved SD = "
       "thesis-improved-sd";
-  auto loaded = load(ctx, "bench_exp3", "ns_per_matrix", method);
+  auto loaded = load(ctx, "bench_exp3", "ns_per_matrix", method, {kDiag, kSd, kImprovedSd});
   if (auto* outcome = std::get_if<Outcome>(&loaded)) return *outcome;
   const auto& results = std::get<BenchResults>(loaded);
-  if (auto absent = missing(results, {kDiag, kSd, kImprovedSd}); !absent.empty())
-    return inconclusive("benchmarks missing from bench_exp3.json: " + absent, method);
 
   constexpr double paper = 4.2;
   const double diag = *results[kDiag], sd = *results[kSd], improved = *results[kImprovedSd];
@@ -240,13 +240,11 @@ Outcome check_app_speedup(const RunContext& ctx) {
       "(experiments/sym3/deformation.hpp) on ChineseDragon-10kv (libcgal-demo) subdivided once, 79,976 "
       "triangles, towards a twisted pose; Diag = eigen-qr-diag, improved SD = thesis-improved-sd; ratio = "
       "time(Diag) / time(improved SD)";
-  auto loaded = load(ctx, "bench_app3", "ns_per_frame", method);
+  auto loaded = load(ctx, "bench_app3", "ns_per_frame", method, {kAppDiag, kAppImprovedSd},
+                     "; bench_app3 needs the CGAL demo data " + std::string(affinterp::sym3::cgal_demo_archive) +
+                         " (Debian package libcgal-demo)");
   if (auto* outcome = std::get_if<Outcome>(&loaded)) return *outcome;
   const auto& results = std::get<BenchResults>(loaded);
-  if (auto absent = missing(results, {kAppDiag, kAppImprovedSd}); !absent.empty())
-    return inconclusive("benchmarks missing from bench_app3.json: " + absent + "; bench_app3 needs the CGAL demo data " +
-                            std::string(affinterp::sym3::cgal_demo_archive) + " (Debian package libcgal-demo)",
-                        method);
 
   constexpr double paper = 1.2;
   const double ratio = *results[kAppDiag] / *results[kAppImprovedSd];
