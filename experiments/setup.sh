@@ -9,7 +9,7 @@ packages=(
   libeigen3-dev libboost-dev libboost-iostreams-dev libboost-filesystem-dev
   libgtest-dev googletest librapidcheck-dev libbenchmark-dev
   libgnuplot-iostream-dev gnuplot-nox fonts-dejavu-core imagemagick
-  nlohmann-json3-dev libcli11-dev libsuitesparse-dev
+  nlohmann-json3-dev libcli11-dev
   libcgal-dev libcgal-demo libxsimd-dev
   libginac-dev
   clang libclang-rt-14-dev
