@@ -13,15 +13,6 @@
 using namespace affinterp::origin;
 using affinterp::origin::testing::origin_substitution;
 
-namespace {
-
-const OriginStudy& study() {
-  static const OriginStudy instance = study_origin(thesis_two_triangles());
-  return instance;
-}
-
-}  // namespace
-
 TEST(Minimise, SolvesASmallQuadraticExactly) {
   const GiNaC::symbol a("a"), b("b"), s("s");
   // (a − 1)² + (a + b − s)² + b²: minimiser a = (s + 2)/3, b = (s − 1)/3 (by hand).
@@ -45,25 +36,25 @@ TEST(Minimise, RejectsTheEnergyWithB2AsPrinted) {
 }
 
 TEST(OriginStudy, SymbolicMinimiserSolvesTheNormalEquationsExactly) {
-  for (const GiNaC::ex& equation : normal_equations(study().E2_common, symbols().unknowns))
-    EXPECT_TRUE(equation.lhs().subs(study().min_E2_common.minimiser).normal().is_zero()) << equation;
+  for (const GiNaC::ex& equation : normal_equations(thesis_study().E2_common, symbols().unknowns))
+    EXPECT_TRUE(equation.lhs().subs(thesis_study().min_E2_common.minimiser).normal().is_zero()) << equation;
 }
 
 TEST(OriginStudy, EnergyE1IsE2WithBothOriginsAtZero) {
-  EXPECT_TRUE((study().E2_common.subs(origin_substitution(0, 0)) - study().E1).expand().is_zero());
-  EXPECT_TRUE((study().min_E2_common.value.subs(origin_substitution(0, 0)) - study().min_E1.value).is_zero());
+  EXPECT_TRUE((thesis_study().E2_common.subs(origin_substitution(0, 0)) - thesis_study().E1).expand().is_zero());
+  EXPECT_TRUE((thesis_study().min_E2_common.value.subs(origin_substitution(0, 0)) - thesis_study().min_E1.value).is_zero());
 }
 
 RC_GTEST_PROP(OriginStudy, MinimiserAtARationalOriginSatisfiesTheNormalEquations,
               (GiNaC::numeric x, GiNaC::numeric y)) {
   const GiNaC::lst o = origin_substitution(x, y);
-  const GiNaC::ex E = study().E2_common.subs(o);
+  const GiNaC::ex E = thesis_study().E2_common.subs(o);
   const Minimum m = minimise(E, symbols().unknowns);
   for (const GiNaC::ex& equation : normal_equations(E, symbols().unknowns))
     RC_ASSERT(equation.lhs().subs(m.minimiser).is_zero());
   // The symbolic minimiser, evaluated at o, is the same point.
   for (const GiNaC::ex& relation : m.minimiser)
-    RC_ASSERT((relation.rhs() - relation.lhs().subs(study().min_E2_common.minimiser).subs(o)).is_zero());
+    RC_ASSERT((relation.rhs() - relation.lhs().subs(thesis_study().min_E2_common.minimiser).subs(o)).is_zero());
 }
 
 RC_GTEST_PROP(OriginStudy, TheStationaryPointIsTheMinimum,
@@ -71,7 +62,7 @@ RC_GTEST_PROP(OriginStudy, TheStationaryPointIsTheMinimum,
   RC_PRE(!step.is_zero());
   // E is quadratic: E(v* + s e) − E(v*) = s² e^T H e / 2, positive for a positive definite Hessian.
   const GiNaC::lst o = origin_substitution(x, y);
-  const GiNaC::ex E = study().E2_common.subs(o);
+  const GiNaC::ex E = thesis_study().E2_common.subs(o);
   const Minimum m = minimise(E, symbols().unknowns);
   GiNaC::lst moved;
   for (unsigned k = 0; k < m.minimiser.nops(); ++k) {

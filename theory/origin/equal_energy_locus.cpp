@@ -19,6 +19,11 @@ OriginStudy study_origin(const TwoTriangles& config) {
   return study;
 }
 
+const OriginStudy& thesis_study() {
+  static const OriginStudy study = study_origin(thesis_two_triangles());
+  return study;
+}
+
 GiNaC::ex locus_polynomial(const GiNaC::ex& difference) {
   const Symbols& s = symbols();
   GiNaC::ex P = GiNaC::numer(difference.normal()).expand();

@@ -23,6 +23,9 @@ struct OriginStudy {
 /// Builds both energies from their definitions (Defs. 2.3.1, 2.3.2) and minimises them exactly.
 OriginStudy study_origin(const TwoTriangles& config);
 
+/// study_origin of the thesis's configuration (thesis_two_triangles), computed once.
+const OriginStudy& thesis_study();
+
 /// The polynomial P(x, y) whose zero set is {difference = 0} for a rational function whose denominator
 /// never vanishes: the numerator, with integer coefficients of gcd 1 and a positive leading coefficient
 /// (first in x, then in y).

@@ -28,7 +28,7 @@ std::optional<std::pair<GiNaC::numeric, GiNaC::numeric>> first_off(
 
 Outcome check_conic(const RunContext& ctx) {
   const origin::Symbols& s = origin::symbols();
-  const origin::OriginStudy& study = thesis_study();
+  const origin::OriginStudy& study = origin::thesis_study();
   const GiNaC::ex min_E1 = study.min_E1.value, min_E2 = study.min_E2_common.value;
   const GiNaC::lst at_zero{s.x == 0, s.y == 0};
   const bool E2_at_zero_is_E1 = (min_E2.subs(at_zero) - min_E1).is_zero();

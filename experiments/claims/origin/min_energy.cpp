@@ -10,7 +10,7 @@ namespace affinterp::claims {
 
 Outcome check_min_energy(const RunContext& ctx) {
   const origin::Symbols& s = origin::symbols();
-  const origin::OriginStudy& study = thesis_study();
+  const origin::OriginStudy& study = origin::thesis_study();
   const GiNaC::ex computed = study.min_E2_common.value;
   const GiNaC::ex printed = origin::printed::min_E2();
   const bool symbolic_equal = (computed - printed).normal().is_zero();

@@ -21,7 +21,7 @@ GiNaC::ex printed_energy(Reading reading) {
 
 Outcome check_minimiser(const RunContext& ctx) {
   const origin::Symbols& s = origin::symbols();
-  const origin::OriginStudy& study = thesis_study();
+  const origin::OriginStudy& study = origin::thesis_study();
   const GiNaC::lst printed = origin::printed::minimiser();
 
   // Symbolic comparison, coordinate by coordinate.

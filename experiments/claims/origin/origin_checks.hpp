@@ -17,9 +17,6 @@ Outcome check_minimiser(const RunContext& ctx);    // thesis.sec-2.3.minimiser
 Outcome check_min_energy(const RunContext& ctx);   // thesis.sec-2.3.min-energy
 Outcome check_conic(const RunContext& ctx);        // thesis.sec-2.3.conic
 
-/// The origin study of the thesis's configuration, computed once (exact, symbolic in x, y).
-const origin::OriginStudy& thesis_study();
-
 /// A random origin o = (x, y) with small-denominator rational coordinates (numerators in [−12, 12],
 /// denominators in [1, 9]), as the substitution {x == …, y == …}.
 GiNaC::lst random_rational_origin(Rng& rng);

@@ -5,11 +5,6 @@
 
 namespace affinterp::claims {
 
-const origin::OriginStudy& thesis_study() {
-  static const origin::OriginStudy study = origin::study_origin(origin::thesis_two_triangles());
-  return study;
-}
-
 GiNaC::lst random_rational_origin(Rng& rng) {
   const auto coordinate = [&rng] {
     const auto p = rng.integer(-12, 12);
