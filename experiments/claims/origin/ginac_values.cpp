@@ -8,12 +8,46 @@
 #include <stdexcept>
 
 namespace affinterp::claims {
+namespace {
+
+/// GiNaC's own printing. Its term order follows internal hash values that differ from run to run, so it
+/// serves only numbers and lone symbols.
+std::string ginac_text(const GiNaC::ex& e) {
+  std::ostringstream out;
+  out << e;
+  return out.str();
+}
+
+/// Whether `e` is a polynomial in the origin's x, y with rational coefficients.
+bool rational_polynomial_in_origin(const GiNaC::ex& e) {
+  const origin::Symbols& s = origin::symbols();
+  if (!e.is_polynomial(GiNaC::lst{s.x, s.y})) return false;
+  const GiNaC::ex expanded = e.expand();
+  for (int i = expanded.ldegree(s.x); i <= expanded.degree(s.x); ++i) {
+    const GiNaC::ex in_y = expanded.coeff(s.x, i);
+    for (int j = in_y.ldegree(s.y); j <= in_y.degree(s.y); ++j)
+      if (!GiNaC::is_a<GiNaC::numeric>(in_y.coeff(s.y, j))) return false;
+  }
+  return true;
+}
+
+/// The coefficient of P's first term in polynomial_formula's order.
+GiNaC::numeric leading_coefficient(const GiNaC::ex& P) {
+  const origin::Symbols& s = origin::symbols();
+  const GiNaC::ex e = P.expand();
+  const int degree = origin::total_degree(e);
+  for (int i = degree; i >= 0; --i)
+    if (const GiNaC::ex c = e.coeff(s.x, i).coeff(s.y, degree - i); !c.is_zero()) return GiNaC::ex_to<GiNaC::numeric>(c);
+  return 0;
+}
+
+}  // namespace
 
 std::string exact_number(const GiNaC::ex& e) {
   if (!GiNaC::is_a<GiNaC::numeric>(e) || !GiNaC::ex_to<GiNaC::numeric>(e).is_rational())
-    throw std::invalid_argument("exact_number: not a rational number: " + formula(e));
+    throw std::invalid_argument("exact_number: not a rational number: " + ginac_text(e));
   // GiNaC prints rationals as p/q; parsing through the suite's own type fixes the exchange format.
-  return exact::to_string(exact::parse_rational(formula(e)));
+  return exact::to_string(exact::parse_rational(ginac_text(e)));
 }
 
 nlohmann::json exact_matrix(const GiNaC::matrix& m) {
@@ -27,9 +61,14 @@ nlohmann::json exact_matrix(const GiNaC::matrix& m) {
 }
 
 std::string formula(const GiNaC::ex& e) {
-  std::ostringstream out;
-  out << e;
-  return out.str();
+  const GiNaC::ex fraction = e.normal().numer_denom();
+  const GiNaC::ex numerator = fraction.op(0), denominator = fraction.op(1);
+  if (!rational_polynomial_in_origin(numerator) || !rational_polynomial_in_origin(denominator)) return ginac_text(e);
+  // The reduced fraction with a denominator whose leading coefficient is 1: the same text for the same
+  // function, whatever order GiNaC holds the terms in.
+  const GiNaC::numeric lead = leading_coefficient(denominator);
+  const std::string top = polynomial_formula(numerator / lead), bottom = polynomial_formula(denominator / lead);
+  return bottom == "1" ? top : "(" + top + ")/(" + bottom + ")";
 }
 
 std::string polynomial_formula(const GiNaC::ex& P) {
