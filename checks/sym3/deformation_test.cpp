@@ -2,6 +2,7 @@
 // generated mesh: it reproduces the source at t = 0 and the target at t = 1.
 #include "experiments/sym3/deformation.hpp"
 #include "experiments/sym3/pose.hpp"
+#include "theory/linalg/symmetric.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
@@ -31,8 +32,7 @@ Mesh3 small_sphere() {
 /// exp S by diagonalisation, independent of the algorithms under test.
 Eigen::Matrix3d exp_by_diagonalisation(const Eigen::Matrix3d& S) {
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(S);
-  return eigen.eigenvectors() * eigen.eigenvalues().array().exp().matrix().asDiagonal() *
-         eigen.eigenvectors().transpose();
+  return linalg::congruence(eigen.eigenvectors(), eigen.eigenvalues().array().exp().matrix());
 }
 
 /// The largest distance between corresponding vertices (a plain loop: GCC 12 warns falsely on Eigen's

@@ -1,4 +1,5 @@
 // Properties of ours (exp, S^t, log) on random symmetric matrices, with RapidCheck.
+#include "theory/linalg/symmetric.hpp"
 #include "theory/sym3/affinterp.hpp"
 
 #include <Eigen/Cholesky>
@@ -25,7 +26,7 @@ rc::Gen<Mat3> symmetric(double bound) {
 
 /// SPD matrices MᵀM + I/10 with M from the same grid.
 rc::Gen<Mat3> spd() {
-  return rc::gen::map(symmetric(2.0), [](const Mat3& M) { return Mat3(M.transpose() * M + 0.1 * Mat3::Identity()); });
+  return rc::gen::map(symmetric(2.0), [](const Mat3& M) { return Mat3(linalg::outer_gram(M.transpose()) + 0.1 * Mat3::Identity()); });
 }
 
 RC_GTEST_PROP(Sym3Properties, ExpIsSymmetricPositiveDefinite, ()) {

@@ -1,5 +1,7 @@
 #include "experiments/sym3/deformation.hpp"
 
+#include "theory/linalg/symmetric.hpp"
+
 #include <Eigen/Geometry>
 #include <Eigen/SVD>
 
@@ -52,8 +54,7 @@ Deformation3::Deformation3(const Mesh3& source, const Mesh3& target) : source_(s
     const Eigen::AngleAxisd rotation(Matrix3d(svd.matrixU() * svd.matrixV().transpose()));
     axis_[i] = rotation.axis();
     angle_[i] = rotation.angle();
-    log_S_[i] = svd.matrixV() * svd.singularValues().array().log().matrix().asDiagonal() *
-                svd.matrixV().transpose();
+    log_S_[i] = linalg::congruence(svd.matrixV(), svd.singularValues().array().log().matrix());
     area_[i] = P.col(0).cross(P.col(1)).norm() / 2;
     for (const auto& [a, b] : edge_ends) {
       const Index va = source.triangles(a, i), vb = source.triangles(b, i);

@@ -1,5 +1,7 @@
 #include "experiments/sym3/families.hpp"
 
+#include "theory/linalg/symmetric.hpp"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -124,7 +126,7 @@ std::vector<Mat3> thesis_distribution(std::uint64_t seed, std::size_t count) {
     Mat3 M;
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 3; ++c) M(r, c) = rng.uniform(-1, 1);
-    out.push_back(M.transpose() * M);
+    out.push_back(linalg::outer_gram(M.transpose()));  // Mᵀ M, exactly symmetric
   }
   return out;
 }
@@ -134,10 +136,7 @@ Mat3 random_rotation(Rng& rng) {
   return q.normalized().toRotationMatrix();
 }
 
-Mat3 with_spectrum(const Vec3& lambda, const Mat3& Q) {
-  const Mat3 S = Q * lambda.asDiagonal() * Q.transpose();
-  return (S + S.transpose()) / 2;  // exactly symmetric after rounding
-}
+Mat3 with_spectrum(const Vec3& lambda, const Mat3& Q) { return linalg::congruence(Q, lambda); }
 
 const std::vector<double>& cluster_gaps() {
   static const std::vector<double> gaps = [] {

@@ -1,7 +1,8 @@
 #pragma once
 // Families of 3×3 symmetric test matrices for the accuracy sweep and the benchmarks of thesis ch. 3.
-// Every family is deterministic for a seed: the same (family, seed, count) gives the same matrices on
-// every platform (draws come from affinterp::Rng).
+// Every family is deterministic for a seed: the same (family, seed, count) gives the same draws on every
+// platform (affinterp::Rng). The matrices built from them are exactly symmetric on every CPU; their last
+// bits may differ between builds that vectorise or contract (FMA) differently.
 #include "experiments/common/random.hpp"
 
 #include <Eigen/Core>
@@ -22,7 +23,8 @@ std::vector<Mat3> thesis_distribution(std::uint64_t seed, std::size_t count);
 /// A random rotation Q (det Q = +1), uniform on SO(3) (normalised Gaussian quaternion, Box–Muller).
 Mat3 random_rotation(Rng& rng);
 
-/// Q diag(lambda) Qᵀ: a symmetric matrix with the prescribed spectrum in a random orthonormal basis.
+/// Q diag(lambda) Qᵀ: a symmetric matrix (exactly, on every CPU) with the prescribed spectrum in the
+/// orthonormal basis Q.
 Mat3 with_spectrum(const Vec3& lambda, const Mat3& Q);
 
 /// How the spectra of one family are drawn.

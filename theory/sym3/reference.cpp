@@ -1,8 +1,11 @@
 #include "theory/sym3/reference.hpp"
 
+#include "theory/linalg/symmetric.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
 
 namespace affinterp::sym3 {
 
@@ -18,6 +21,14 @@ Real100 frobenius(const Mat3R100& A) {
   return sqrt(sum);
 }
 
+/// The references define exp S and the spectrum of a symmetric S; a non-symmetric input is a caller's
+/// bug (the two methods would read it differently), so it is refused rather than silently symmetrised.
+template <class Matrix>
+const Matrix& require_symmetric(const Matrix& S) {
+  if (!(S == S.transpose())) throw std::invalid_argument("sym3 reference: the matrix is not symmetric");
+  return S;
+}
+
 Real100 off_diagonal(const Mat3R100& A) {
   return sqrt(A(0, 1) * A(0, 1) + A(0, 2) * A(0, 2) + A(1, 2) * A(1, 2));
 }
@@ -25,7 +36,7 @@ Real100 off_diagonal(const Mat3R100& A) {
 }  // namespace
 
 ReferenceEigen reference_eigen(const Mat3R100& S) {
-  Mat3R100 A = S;
+  Mat3R100 A = require_symmetric(S);
   Mat3R100 V = Mat3R100::Identity();
   const Real100 tolerance = Real100("1e-98") * frobenius(S);
   constexpr std::array<std::array<int, 2>, 3> pairs{{{0, 1}, {0, 2}, {1, 2}}};
@@ -58,12 +69,12 @@ Mat3R100 exp_by_eigen(const Mat3R100& S) {
   const ReferenceEigen e = reference_eigen(S);
   Vec3R100 exp_lambda;
   for (int k = 0; k < 3; ++k) exp_lambda(k) = exp(e.lambda(k));
-  return e.V * exp_lambda.asDiagonal() * e.V.transpose();
+  return linalg::congruence(e.V, exp_lambda);
 }
 
 Mat3R100 exp_by_taylor(const Mat3R100& S) {
   // Scale so that ‖S/2^s‖_F ≤ 1/2; the series then needs about 80 terms for 10⁻¹⁰⁵.
-  const double norm = static_cast<double>(frobenius(S));
+  const double norm = static_cast<double>(frobenius(require_symmetric(S)));
   const int s = norm > 0.5 ? static_cast<int>(std::ceil(std::log2(norm / 0.5))) : 0;
   const Mat3R100 A = S / pow(Real100(2), s);
   Mat3R100 sum = Mat3R100::Identity();

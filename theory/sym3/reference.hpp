@@ -19,7 +19,8 @@ struct ReferenceEigen {
   Mat3R100 V;
 };
 
-/// Cyclic Jacobi rotations until the off-diagonal part is below 10⁻⁹⁸ ‖S‖_F.
+/// Cyclic Jacobi rotations until the off-diagonal part is below 10⁻⁹⁸ ‖S‖_F. Every reference below
+/// requires S exactly symmetric and throws std::invalid_argument otherwise.
 ReferenceEigen reference_eigen(const Mat3R100& S);
 /// Method 1: V exp(Λ) Vᵀ at 100 digits.
 Mat3R100 exp_by_eigen(const Mat3R100& S);
