@@ -22,4 +22,4 @@ cmake -S "$root" -B "$second" -G Ninja -DCMAKE_BUILD_TYPE=Release -DAFFINTERP_NA
   -DCMAKE_CXX_FLAGS="$flags" >/dev/null
 cmake --build "$second" -j "$(nproc)"
 echo "==> running the tests ($second: $flags)"
-ctest --test-dir "$second" --output-on-failure -j "$(nproc)" -LE heavy "$@"
+ctest --test-dir "$second" --output-on-failure -j "$(nproc)" -LE "heavy|install" "$@"

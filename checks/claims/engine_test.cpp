@@ -4,8 +4,8 @@
 #include "experiments/claims/registry.hpp"
 #include "experiments/claims/runner.hpp"
 #include "experiments/claims/values.hpp"
-#include "experiments/common/parallel.hpp"
-#include "experiments/common/staged_output.hpp"
+#include "experiments/support/parallel.hpp"
+#include "experiments/support/staged_output.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Small test shapes: a rectangular strip of triangles and its bend around an arc, built in the tests
 // themselves so that they need no files.
-#include "experiments/shapes/grid.hpp"
+#include "experiments/inputs/shapes/grid.hpp"
 #include "theory/global/mesh.hpp"
 
 #include <cmath>

@@ -1,7 +1,7 @@
 // Every exponential and eigenvalue algorithm against the 100-digit reference on every family, at a
 // quick size. The tolerances state what each algorithm achieves (peers can be inaccurate); ours must
 // meet its target: relative Frobenius error ≤ 2·10⁻¹⁵·max(1, ‖S‖₂).
-#include "experiments/sym3/families.hpp"
+#include "experiments/inputs/sym3/families.hpp"
 #include "theory/sym3/reference.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -49,7 +49,7 @@ const std::vector<Sample>& samples(const Family& family) {
   return out;
 }
 
-/// Every family of experiments/sym3/families.hpp, then the edge cases as a family "edge".
+/// Every family of experiments/inputs/sym3/families.hpp, then the edge cases as a family "edge".
 std::vector<std::pair<std::string, const std::vector<Sample>*>> all_samples() {
   static const std::vector<Sample> edges = edge_cases();
   std::vector<std::pair<std::string, const std::vector<Sample>*>> out;

@@ -1,5 +1,5 @@
 // The two high-precision references agree with each other, and with exactly known exponentials.
-#include "experiments/sym3/families.hpp"
+#include "experiments/inputs/sym3/families.hpp"
 #include "theory/linalg/symmetric.hpp"
 #include "theory/sym3/reference.hpp"
 

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace affinterp::claims {
 
@@ -34,6 +35,8 @@ struct RunContext {
   std::filesystem::path figure_stem(std::string_view name) const { return figure_dir / name; }
   /// How the report refers to a drawn figure file, e.g. "figures/kaji-fig1.png".
   static std::string figure_ref(std::string_view file_name) { return "figures/" + std::string(file_name); }
+  /// figure_ref of each file drawn into figure_dir.
+  static std::vector<std::string> figure_refs(const std::vector<std::string>& file_names);
 };
 
 std::string_view to_string(Size size);

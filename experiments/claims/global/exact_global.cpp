@@ -1,7 +1,7 @@
 #include "experiments/claims/global/exact_global.hpp"
 
 #include "experiments/claims/values.hpp"
-#include "experiments/shapes/grid.hpp"
+#include "experiments/inputs/shapes/grid.hpp"
 
 #include <stdexcept>
 #include <utility>

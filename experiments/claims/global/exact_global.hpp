@@ -2,7 +2,7 @@
 // Exact rational versions of the global problem for the algebraic claims: small random meshes with
 // rational vertices, the global quadratic form G, u assembled from the same templated local errors as the
 // engine (theory/global/local_error.hpp), and exact rank and solve by Gaussian elimination.
-#include "experiments/common/random.hpp"
+#include "experiments/support/random.hpp"
 #include "theory/exact/rational.hpp"
 #include "theory/global/interpolation.hpp"
 #include "theory/global/local_error.hpp"

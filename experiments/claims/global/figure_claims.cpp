@@ -1,9 +1,9 @@
 // The figure claims of Kaji §4–5 (Figs 2–7), decided by per-frame metrics of interpolations of the
-// project's generated shapes (experiments/shapes), never by looking: flipped triangles, min det B_i(t),
+// project's generated shapes (experiments/inputs/shapes), never by looking: flipped triangles, min det B_i(t),
 // the distance from the exact in-between pose where one is known, and the rigidity of chosen triangles.
 #include "experiments/claims/global/animation.hpp"
 #include "experiments/claims/global/global_checks.hpp"
-#include "experiments/shapes/catalogue.hpp"
+#include "experiments/inputs/shapes/catalogue.hpp"
 #include "theory/global/local_error.hpp"
 #include "theory/local/polar_decomposition.hpp"
 

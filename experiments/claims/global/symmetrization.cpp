@@ -3,7 +3,7 @@
 // and comparing v(t) of P → Q with v(1 − t) of Q → P; the unsymmetrised E is measured alongside.
 #include "experiments/claims/global/animation.hpp"
 #include "experiments/claims/global/global_checks.hpp"
-#include "experiments/shapes/catalogue.hpp"
+#include "experiments/inputs/shapes/catalogue.hpp"
 
 #include <algorithm>
 #include <cstdio>

@@ -6,7 +6,7 @@
 #include "experiments/claims/local/condition_sweep.hpp"
 #include "experiments/claims/local/simple_values.hpp"
 #include "experiments/claims/values.hpp"
-#include "experiments/common/random.hpp"
+#include "experiments/support/random.hpp"
 #include "plots/region_map.hpp"
 #include "theory/local/thesis_conditions.hpp"
 

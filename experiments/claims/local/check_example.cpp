@@ -2,7 +2,7 @@
 // decomposition, and the four goodness statements, all decided exactly in Q(√3) (cos and sin of multiples
 // of π/3 lie there).
 #include "experiments/claims/local/checks.hpp"
-#include "experiments/claims/local/figures.hpp"
+#include "plots/local/figures.hpp"
 #include "theory/local/affine_map.hpp"
 #include "theory/local/goodness.hpp"
 #include "theory/local/quadratic_field.hpp"
@@ -92,7 +92,7 @@ Outcome check_example_2_2_4(const RunContext& ctx) {
                         ? "A, its SVD R_{pi/3} diag(2,1) R_{-5pi/3} and polar form R_{-4pi/3} S are exact in Q(sqrt 3); linear is good for "
                           "neither area nor norm, SVD is good for area, polar for area and norm (printed angles lie outside the stated ranges)"
                         : "the example's matrices or goodness statements do not all hold";
-  if (ctx.draws_figures()) outcome.figures = draw_thesis_figures_2_2_to_2_5(ctx);
+  if (ctx.draws_figures()) outcome.figures = ctx.figure_refs(plots::draw_thesis_figures_2_2_to_2_5(ctx.figure_dir));
   if (outcome.verdict == Verdict::refuted)
     outcome.counterexample = {{"A", surd_matrix(A_printed)}, {"S", surd_matrix(S_printed)}, {"details", outcome.evidence.details}};
   return outcome;

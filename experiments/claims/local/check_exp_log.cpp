@@ -3,10 +3,10 @@
 // transcendental in t: evaluated in Real50 (50 digits) with stated tolerances; the Appendix's algebraic
 // identities are checked exactly over rationals with rational rotations.
 #include "experiments/claims/local/checks.hpp"
-#include "experiments/claims/local/figures.hpp"
+#include "plots/local/figures.hpp"
 #include "experiments/claims/local/simple_values.hpp"
 #include "experiments/claims/values.hpp"
-#include "experiments/common/random.hpp"
+#include "experiments/support/random.hpp"
 #include "theory/local/local.hpp"
 
 #include <algorithm>
@@ -105,7 +105,7 @@ Outcome check_exp_det_positive(const RunContext& ctx) {
   const bool holds = non_positive == 0 && worst < Real50("1e-30");
   outcome.verdict = holds ? Verdict::confirmed : Verdict::refuted;
   outcome.summary = holds ? "det A^E(t) = (det A)^t > 0 at every sampled t in [-10, 10] (Real50)" : "det A^E(t) is not positive somewhere";
-  if (ctx.draws_figures()) outcome.figures = draw_kaji_figure_1(ctx);
+  if (ctx.draws_figures()) outcome.figures = ctx.figure_refs(plots::draw_kaji_figure_1(ctx.figure_dir));
   return outcome;
 }
 

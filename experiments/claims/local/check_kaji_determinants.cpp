@@ -5,7 +5,7 @@
 #include "experiments/claims/local/checks.hpp"
 #include "experiments/claims/local/simple_values.hpp"
 #include "experiments/claims/values.hpp"
-#include "experiments/common/random.hpp"
+#include "experiments/support/random.hpp"
 #include "theory/local/goodness.hpp"
 #include "theory/local/local.hpp"
 

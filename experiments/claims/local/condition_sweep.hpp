@@ -3,7 +3,7 @@
 // independent decision of the property, tallied in parallel (deterministically: chunks merge in order).
 // Disagreements are counted both ways, and the simplest case of each kind (least `cost`) is kept as the
 // seed of a counterexample.
-#include "experiments/common/parallel.hpp"
+#include "experiments/support/parallel.hpp"
 
 #include <nlohmann/json.hpp>
 

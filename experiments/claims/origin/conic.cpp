@@ -2,7 +2,7 @@
 // x² − 4xy + y² + x + y − 1/4 = 0.
 #include "experiments/claims/origin/ginac_values.hpp"
 #include "experiments/claims/origin/origin_checks.hpp"
-#include "experiments/figures/origin/fig_2_6.hpp"
+#include "plots/origin/fig_2_6.hpp"
 #include "theory/origin/printed_section_2_3.hpp"
 #include "theory/origin/symbols.hpp"
 
@@ -101,7 +101,7 @@ Outcome check_conic(const RunContext& ctx) {
     }
     out.counterexample = ce;
   }
-  if (ctx.draws_figures()) out.figures = figures::draw_fig_2_6(ctx, study.config, P, Q);
+  if (ctx.draws_figures()) out.figures = ctx.figure_refs(plots::draw_fig_2_6(ctx.figure_dir, study.config, P, Q));
   return out;
 }
 

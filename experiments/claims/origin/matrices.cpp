@@ -2,7 +2,7 @@
 // configuration?
 #include "experiments/claims/origin/ginac_values.hpp"
 #include "experiments/claims/origin/origin_checks.hpp"
-#include "experiments/figures/origin/fig_2_7.hpp"
+#include "plots/origin/fig_2_7.hpp"
 #include "theory/origin/affine_frames.hpp"
 #include "theory/origin/printed_section_2_3.hpp"
 #include "theory/origin/symbols.hpp"
@@ -114,8 +114,8 @@ Outcome check_matrices(const RunContext& ctx) {
   if (out.verdict == Verdict::corrected)
     out.correction = "b21 = -x + v2x + v3x - v4x + x(-v3x + v4x) + y(-v2x + v4x), b22 likewise in y";
   if (ctx.draws_figures()) {
-    const figures::Fig27 figure = figures::draw_fig_2_7(ctx, config);
-    out.figures = figure.files;
+    const plots::Fig27 figure = plots::draw_fig_2_7(ctx.figure_dir, config);
+    out.figures = ctx.figure_refs(figure.files);
     out.evidence.details["Fig 2.7: largest vertex gap between red and green frames"] = figure.largest_gap;
   }
   return out;

@@ -2,7 +2,7 @@
 // The checks of the origin study (thesis §2.3), one per claim, and what they share.
 #include "experiments/claims/context.hpp"
 #include "experiments/claims/outcome.hpp"
-#include "experiments/common/random.hpp"
+#include "experiments/support/random.hpp"
 
 #include "theory/origin/equal_energy_locus.hpp"
 

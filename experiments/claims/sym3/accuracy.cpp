@@ -1,10 +1,10 @@
 #include "experiments/claims/sym3/accuracy.hpp"
 
 #include "experiments/claims/values.hpp"
-#include "experiments/common/parallel.hpp"
-#include "experiments/common/progress.hpp"
-#include "experiments/sym3/exp_batch.hpp"
-#include "experiments/sym3/families.hpp"
+#include "experiments/support/parallel.hpp"
+#include "experiments/support/progress.hpp"
+#include "theory/sym3/exp_batch.hpp"
+#include "experiments/inputs/sym3/families.hpp"
 #include "plots/figure.hpp"
 #include "theory/sym3/reference.hpp"
 
@@ -268,7 +268,7 @@ Outcome check_exp_accuracy(const RunContext& ctx) {
   Outcome outcome;
   outcome.evidence.method =
       "sweep: relative Frobenius error ‖E − exp S‖_F / ‖exp S‖_F against a 50-digit reference "
-      "(theory/sym3/reference.hpp), every algorithm on every family of experiments/sym3/families.hpp";
+      "(theory/sym3/reference.hpp), every algorithm on every family of experiments/inputs/sym3/families.hpp";
   outcome.evidence.sample_size = cases.size();
   outcome.evidence.seed = seed;
   outcome.evidence.tolerance = kThesisErrorBound;

@@ -2,7 +2,7 @@
 // Rational symmetric matrices with exactly known eigenvalues, for deciding the chapter-3 claims:
 // S = Q diag(λ) Qᵀ with Q = (I − K)(I + K)⁻¹ the Cayley transform of a rational skew-symmetric K, an
 // exact rational orthogonal matrix.
-#include "experiments/common/random.hpp"
+#include "experiments/support/random.hpp"
 #include "theory/exact/rational.hpp"
 #include "theory/sym3/reference.hpp"
 

@@ -1,7 +1,7 @@
 #include "experiments/claims/sym3/speed.hpp"
 
 #include "experiments/claims/bench_results.hpp"
-#include "experiments/sym3/demo_mesh.hpp"
+#include "experiments/inputs/sym3/demo_mesh.hpp"
 #include "plots/figure.hpp"
 
 #include <cmath>
@@ -233,7 +233,7 @@ Outcome check_exp_speedup(const RunContext& ctx) {
 Outcome check_app_speedup(const RunContext& ctx) {
   const std::string method =
       "Google Benchmark bench_app3: CPU time per frame (median of repetitions) of the 3D deformation pipeline "
-      "(experiments/sym3/deformation.hpp) on ChineseDragon-10kv (libcgal-demo) subdivided once, 79,976 "
+      "(theory/deformation/deformation.hpp) on ChineseDragon-10kv (libcgal-demo) subdivided once, 79,976 "
       "triangles, towards a twisted pose; Diag = eigen-qr-diag, improved SD = thesis-improved-sd; ratio = "
       "time(Diag) / time(improved SD)";
   auto loaded = load(ctx, "bench_app3", "ns_per_frame", method, {kAppDiag, kAppImprovedSd},

@@ -7,7 +7,7 @@
 
 #include "experiments/claims/sym3/exact_spectrum.hpp"
 #include "experiments/claims/values.hpp"
-#include "experiments/sym3/families.hpp"
+#include "experiments/inputs/sym3/families.hpp"
 #include "theory/sym3/viete.hpp"
 
 #include <algorithm>

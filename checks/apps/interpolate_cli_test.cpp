@@ -1,0 +1,229 @@
+// `affinterp shapes` and `affinterp interpolate` end to end: outputs on generated shapes and the shared
+// meshes, and for each kind of bad input a one-line error, a non-zero exit and an untouched OUT.
+#include "checks/apps/cli_harness.hpp"
+#include "checks/inputs/shared_meshes.hpp"
+#include "experiments/inputs/mesh_file.hpp"
+#include "experiments/inputs/shapes/catalogue.hpp"
+#include "plots/mesh_animation.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <numbers>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace affinterp;
+using checks::one_line;
+using checks::run_cli;
+
+fs::path scratch(const std::string& name) {
+  const fs::path folder = fs::temp_directory_path() / ("affinterp_cli_test_" + std::to_string(getpid())) / name;
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  return folder;
+}
+
+void write_text(const fs::path& file, const std::string& text) { std::ofstream(file) << text; }
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+nlohmann::json read_json(const fs::path& file) {
+  std::ifstream in(file);
+  return nlohmann::json::parse(in);
+}
+
+/// Checks OUT after a successful run of `frames` frames from `source`.
+void expect_frames(const fs::path& out, const fs::path& source, int frames, double t0 = 0, double t1 = 1) {
+  const global::Mesh mesh = io::read_mesh(source);
+  const nlohmann::json metrics = read_json(out / "metrics.json");
+  ASSERT_EQ(metrics["frames"].size(), static_cast<std::size_t>(frames));
+  for (int k = 0; k < frames; ++k) {
+    const auto& frame = metrics["frames"][static_cast<std::size_t>(k)];
+    EXPECT_NEAR(frame["t"].get<double>(), t0 + (t1 - t0) * k / (frames - 1), 1e-12);
+    const global::Mesh read = io::read_mesh(out / frame["file"].get<std::string>());
+    EXPECT_EQ(read.vertex_count(), mesh.vertex_count());
+    EXPECT_EQ(read.triangles.cols(), mesh.triangles.cols());
+    for (const char* key : {"flipped_triangles", "min_det", "max_det", "max_distortion", "mean_distortion", "area_ratio"})
+      EXPECT_TRUE(frame.contains(key)) << key;
+  }
+  EXPECT_FALSE(fs::exists(out / ("frame_" + std::to_string(10000 + frames).substr(1) + ".obj"))) << "no stale frames";
+}
+
+TEST(ShapesCli, ListsAndWritesEveryPair) {
+  EXPECT_EQ(run_cli("shapes --list").status, 0);
+  for (const auto& info : shapes::shape_catalogue()) {
+    const fs::path out = scratch("shapes") / info.name;
+    ASSERT_EQ(run_cli("shapes " + info.name + " --out " + out.string()).status, 0) << info.name;
+    EXPECT_EQ(io::read_mesh(out / "source.obj").triangles, io::read_mesh(out / "target.obj").triangles);
+  }
+  const auto unknown = run_cli("shapes teapot --out " + scratch("teapot").string());
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_TRUE(one_line(unknown.error)) << unknown.error;
+}
+
+TEST(InterpolateCli, RunsOnEveryGeneratedShape) {
+  for (const auto& info : shapes::shape_catalogue()) {
+    SCOPED_TRACE(info.name);
+    const fs::path folder = scratch("generated") / info.name;
+    ASSERT_EQ(run_cli("shapes " + info.name + " --out " + folder.string()).status, 0);
+    const auto result = run_cli("interpolate --source " + (folder / "source.obj").string() + " --target " +
+                                (folder / "target.obj").string() + " --frames 5 --no-figures --out " + (folder / "out").string());
+    ASSERT_EQ(result.status, 0) << result.error;
+    expect_frames(folder / "out", folder / "source.obj", 5);
+  }
+}
+
+TEST(InterpolateCli, DrawsAFilmstripAndAnAnimation) {
+  const fs::path folder = scratch("figures");
+  ASSERT_EQ(run_cli("shapes man-wave --out " + folder.string()).status, 0);
+  const fs::path out = folder / "out";
+  const auto result = run_cli("interpolate --source " + (folder / "source.obj").string() + " --target " +
+                              (folder / "target.obj").string() + " --frames 6 --time-range -0.25:1.25 --out " + out.string());
+  ASSERT_EQ(result.status, 0) << result.error;
+  expect_frames(out, folder / "source.obj", 6, -0.25, 1.25);
+  EXPECT_GT(fs::file_size(out / "filmstrip.png"), 1000u);
+  EXPECT_GT(fs::file_size(out / "filmstrip.svg"), 1000u);
+  if (plots::find_convert()) EXPECT_GT(fs::file_size(out / "animation.gif"), 1000u);
+  else EXPECT_NE(result.error.find("no animation.gif"), std::string::npos);
+}
+
+TEST(InterpolateCli, AcceptsEveryOptionFamily) {
+  const fs::path folder = scratch("options");
+  ASSERT_EQ(run_cli("shapes random --out " + folder.string()).status, 0);
+  const global::Mesh source = io::read_mesh(folder / "source.obj");
+  std::string weights;
+  for (Eigen::Index i = 0; i < source.triangle_count(); ++i) weights += std::to_string(i % 2) + "\n";
+  write_text(folder / "weights.txt", weights);
+  const std::string io = " --source " + (folder / "source.obj").string() + " --target " + (folder / "target.obj").string() +
+                         " --frames 3 --no-figures --out " + (folder / "out").string();
+  for (const std::string& options : std::vector<std::string>{"--local polar --energy F --no-area-weights --pin 0 --pin 3@10", "--local svd --energy S --symmetric",
+        "--local linear --energy blend --weights " + (folder / "weights.txt").string(),
+        "--energy blend --blend-weight 0.2 --rotation-branch principal",
+        "--locus '1@5:0,0;0.5,2;1,1' --edge-direction 0:1 --edge-direction 1:2:linear@3 --barycentre-locus none",
+        "--barycentre-locus '0,0;1,1;2,0@2'"}) {
+    const auto result = run_cli("interpolate " + options + io);
+    EXPECT_EQ(result.status, 0) << options << ": " << result.error;
+  }
+}
+
+TEST(InterpolateCli, ClockwiseFilesAreReorientedAndFramesKeepTheirFaceList) {
+  const fs::path d = scratch("clockwise");
+  write_text(d / "s.obj", "v 0 0\nv 0 1\nv 1 0\nv 1 1\nf 1 2 3\nf 3 2 4\n");
+  write_text(d / "t.obj", "v 0 0\nv 0 2\nv 2 0\nv 2 2\nf 1 2 3\nf 3 2 4\n");
+  const auto result = run_cli("interpolate --source " + (d / "s.obj").string() + " --target " + (d / "t.obj").string() +
+                              " --frames 3 --no-figures --out " + (d / "out").string());
+  ASSERT_EQ(result.status, 0) << result.error;
+  EXPECT_NE(result.error.find("clockwise"), std::string::npos);
+  EXPECT_EQ(io::read_mesh(d / "out" / "frame_0001.obj").triangles, io::read_mesh(d / "s.obj").triangles);
+  EXPECT_TRUE(read_json(d / "out" / "metrics.json")["reoriented"].get<bool>());
+  EXPECT_EQ(read_json(d / "out" / "metrics.json")["frames"][1]["flipped_triangles"].get<int>(), 0);
+}
+
+/// Runs `interpolate ARGS --out OUT` on a folder holding earlier output; expects a refusal that leaves it.
+void expect_refused(const std::string& args, int status, const std::string& message_part) {
+  SCOPED_TRACE(args);
+  const fs::path out = scratch("refused") / "out";
+  fs::create_directories(out);
+  write_text(out / "frame_0000.obj", "earlier\n");
+  write_text(out / "metrics.json", "{}\n");
+  const auto result = run_cli("interpolate " + args + " --frames 3 --out " + out.string());
+  EXPECT_EQ(result.status, status) << result.error;
+  EXPECT_TRUE(one_line(result.error)) << result.error;
+  EXPECT_EQ(result.error.rfind("affinterp: ", 0), 0u) << result.error;
+  EXPECT_NE(result.error.find(message_part), std::string::npos) << result.error;
+  EXPECT_EQ(read_text(out / "frame_0000.obj"), "earlier\n");
+  EXPECT_EQ(read_text(out / "metrics.json"), "{}\n");
+  std::size_t files = 0;
+  for (const auto& entry : fs::directory_iterator(out.parent_path())) files += entry.path() != out;
+  EXPECT_EQ(files, 0u) << "no staging folder left beside OUT";
+}
+
+TEST(InterpolateCli, RefusesBadInputsLeavingOutUntouched) {
+  const fs::path d = scratch("bad");
+  const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n";
+  write_text(d / "s.obj", tri);
+  write_text(d / "t.obj", "v 0 0 0\nv 2 0 0\nv 0 2 0\nv 2 2 0\nf 1 2 3\nf 2 4 3\n");
+  write_text(d / "z.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0.5\nv 1 1 0\nf 1 2 3\nf 2 4 3\n");
+  write_text(d / "quad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 4 3\n");
+  write_text(d / "fewer.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  write_text(d / "faces.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 1\n");
+  write_text(d / "flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n");
+  write_text(d / "flipped.obj", "v 0 0 0\nv -1 0 0\nv 0 1 0\nv -1 1 0\nf 1 2 3\nf 2 4 3\n");
+  write_text(d / "nan.obj", "v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n");
+  write_text(d / "empty.obj", "# nothing\n");
+  write_text(d / "garbled.obj", std::string("v 0 0 0\nv 1\0\x7f 0\n", 16));
+  write_text(d / "range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 5 3\n");
+  write_text(d / "w.txt", "0.5\n");
+  const std::string s = (d / "s.obj").string(), t = (d / "t.obj").string();
+  const auto pair = [&](const std::string& source, const std::string& target) {
+    return "--source " + (d / source).string() + " --target " + (d / target).string();
+  };
+  expect_refused(pair("s.obj", "missing.obj"), 1, "missing.obj: no such file");
+  expect_refused(pair("s.obj", "z.obj"), 1, "z.obj:3: z = 0.5 is not 0");
+  expect_refused(pair("quad.obj", "quad.obj"), 1, "quad.obj:5: face with 4 vertices");
+  expect_refused(pair("s.obj", "fewer.obj"), 1, "fewer.obj: the target has 3 vertices, the source 4");
+  expect_refused(pair("s.obj", "faces.obj"), 1, "faces.obj: triangle 1 differs");
+  expect_refused(pair("flat.obj", "t.obj"), 1, "flat.obj: source triangle 0 has zero area");
+  expect_refused(pair("s.obj", "flipped.obj"), 1, "flipped.obj: 2 target triangle(s) flipped");
+  expect_refused(pair("s.obj", "nan.obj"), 1, "nan.obj: vertex 2 has a non-finite coordinate");
+  expect_refused(pair("empty.obj", "empty.obj"), 1, "empty.obj: the mesh has no vertices");
+  expect_refused(pair("garbled.obj", "t.obj"), 1, "garbled.obj:2: NUL byte");
+  expect_refused(pair("range.obj", "t.obj"), 1, "range.obj:6: vertex index 5 is out of range");
+  expect_refused(pair("s.obj", "t.obj") + " --pin 4", 2, "--pin names vertex 4");
+  expect_refused(pair("s.obj", "t.obj") + " --locus 1:0,0", 2, "--locus '1:0,0'");
+  expect_refused(pair("s.obj", "t.obj") + " --edge-direction 1", 2, "--edge-direction '1'");
+  expect_refused(pair("s.obj", "t.obj") + " --barycentre-locus 'x'", 2, "--barycentre-locus 'x'");
+  expect_refused(pair("s.obj", "t.obj") + " --time-range 1:0", 2, "--time-range '1:0'");
+  expect_refused(pair("s.obj", "t.obj") + " --local slerp", 2, "--local");
+  expect_refused(pair("s.obj", "t.obj") + " --energy blend --weights " + (d / "w.txt").string(), 1, "1 weights for 2 triangles");
+  expect_refused(pair("s.obj", "t.obj") + " --frames 1", 2, "--frames");
+  // A flipped target is accepted when allowed (and reported).
+  const auto allowed = run_cli("interpolate " + pair("s.obj", "flipped.obj") + " --allow-flipped-target --no-figures --frames 3 --out " +
+                               (d / "allowed").string());
+  EXPECT_NE(allowed.error.find("flipped"), std::string::npos) << allowed.error;
+}
+
+/// The target of a single shared mesh: its long axis bent by π/2 (shapes::Curl), a known deformation.
+global::Mesh bent(const global::Mesh& mesh) {
+  const Eigen::Vector2d lo = mesh.vertices.rowwise().minCoeff(), hi = mesh.vertices.rowwise().maxCoeff();
+  const bool along_x = hi.x() - lo.x() >= hi.y() - lo.y();
+  const int s = along_x ? 0 : 1;
+  Eigen::Matrix2Xd local(2, mesh.vertex_count());
+  local.row(0) = mesh.vertices.row(s).array() - lo(s);
+  local.row(1) = mesh.vertices.row(1 - s).array() - (lo(1 - s) + hi(1 - s)) / 2;
+  global::Mesh target = mesh;
+  target.vertices = shapes::Curl{hi(s) - lo(s), std::numbers::pi / 2, 1}.apply(local, 1);
+  if (!along_x) target.vertices.row(0) *= -1;  // keep the orientation of the swapped axes
+  return target;
+}
+
+TEST(InterpolateCli, RunsOnTheSharedMeshes) {
+  const auto shared = checks::shared_meshes();
+  if (!shared) GTEST_SKIP() << "skipped: ../shared not present";
+  for (const char* pose : {"man1.obj", "man2.obj", "man3.obj"}) {
+    const fs::path out = scratch("shared") / pose;
+    const auto result = run_cli("interpolate --source " + (*shared / "man0.obj").string() + " --target " +
+                                (*shared / pose).string() + " --frames 4 --no-figures --out " + out.string());
+    ASSERT_EQ(result.status, 0) << result.error;
+    expect_frames(out, *shared / "man0.obj", 4);
+  }
+  for (const char* name : {"arm.obj", "worm.obj", "octopus.obj"}) {
+    const fs::path folder = scratch(std::string("shared_") + name);
+    io::write_obj(bent(io::read_mesh(*shared / name)), folder / "bent.obj");
+    const auto result = run_cli("interpolate --source " + (*shared / name).string() + " --target " +
+                                (folder / "bent.obj").string() + " --frames 3 --no-figures --out " + (folder / "out").string());
+    ASSERT_EQ(result.status, 0) << name << ": " << result.error;
+    expect_frames(folder / "out", *shared / name, 3);
+  }
+}
+
+}  // namespace

@@ -1,0 +1,118 @@
+// `affinterp claims`: run the checks, write claims.json and REPORT.md.
+#include "experiments/claims/catalogue.hpp"
+#include "experiments/claims/claims_json.hpp"
+#include "experiments/claims/registry.hpp"
+#include "experiments/claims/runner.hpp"
+#include "experiments/apps/cli/command.hpp"
+#include "experiments/support/environment.hpp"
+#include "experiments/support/staged_output.hpp"
+#include "reports/generator/report.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <thread>
+
+namespace affinterp::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace affinterp::claims;
+
+struct ClaimsOptions {
+  std::vector<std::string> only;
+  bool list = false;
+  std::uint64_t seed = 2012;
+  std::string size = "full";
+  unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+  std::string out = AFFINTERP_SOURCE_DIR "/reports";
+  std::string bench_dir;
+  bool figures = true;
+};
+
+void list_claims(const CheckRegistry& registry) {
+  for (const auto& info : catalogue())
+    std::cout << info.id << "\t" << (registry.find(info.id) ? "implemented" : "pending") << "\t" << info.where
+              << "\t" << info.statement << "\n";
+}
+
+nlohmann::json read_previous(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) return nlohmann::json::object();
+  return nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+}
+
+void write_file(const fs::path& file, const std::string& text) {
+  std::ofstream out(file);
+  out << text;
+  if (!out) throw CommandFailed("cannot write " + file.string(), 1);
+}
+
+void run(const ClaimsOptions& options) {
+  const CheckRegistry registry = build_registry();
+  if (options.list) return list_claims(registry);
+
+  RunContext context;
+  context.seed = options.seed;
+  context.size = options.size == "quick" ? Size::quick : Size::full;
+  context.threads = options.threads;
+  context.bench_dir = options.bench_dir.empty() ? fs::path(options.out) / "bench" : fs::path(options.bench_dir);
+
+  StagedOutput staged(options.out);
+  if (options.figures) {
+    context.figure_dir = staged.staging() / "figures";
+    fs::create_directories(context.figure_dir);
+  }
+  std::vector<ClaimResult> results;
+  try {
+    results = run_claims(registry, context, options.only, std::cerr);
+  } catch (const std::invalid_argument& e) {
+    throw CommandFailed(e.what(), usage_error);
+  }
+  std::size_t failed = 0;
+  std::map<std::string, int> counts;
+  for (const auto& r : results) {
+    failed += !r.error.empty();
+    ++counts[std::string(to_string(r.outcome.verdict))];
+  }
+  if (failed > 0)
+    throw CommandFailed(std::to_string(failed) + " check(s) failed to run; " + options.out + " left unchanged", 1);
+
+  const fs::path previous_file = fs::path(options.out) / "claims.json";
+  const nlohmann::json document =
+      claims_document(results, context, environment_description(), read_previous(previous_file));
+  write_file(staged.staging() / "claims.json", document.dump(2) + "\n");
+  write_file(staged.staging() / "REPORT.md", report::render_markdown(document));
+  staged.commit();
+
+  std::cerr << "wrote " << previous_file.string() << " and REPORT.md:";
+  for (const auto& [verdict, n] : counts) std::cerr << " " << verdict << " " << n << ";";
+  std::cerr << "\n";
+}
+
+}  // namespace
+
+void add_claims_command(CLI::App& app) {
+  auto options = std::make_shared<ClaimsOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "claims", "Run the checks that decide the papers' claims; write claims.json and REPORT.md.");
+  cmd->add_option("--only", options->only, "Run only these claim IDs (others keep their earlier entries)");
+  cmd->add_flag("--list", options->list, "List the claim IDs and whether each has a check, then exit");
+  cmd->add_option("--seed", options->seed, "Seed of every random sample")->capture_default_str();
+  cmd->add_option("--size", options->size, "Sweep size: quick (CI) or full (the report's)")
+      ->check(CLI::IsMember({"quick", "full"}))
+      ->capture_default_str();
+  cmd->add_option("--threads", options->threads, "Worker threads for sweeps")
+      ->check(CLI::Range(1u, 256u))
+      ->capture_default_str();
+  cmd->add_option("--out", options->out, "Folder for claims.json, REPORT.md and figures/")->capture_default_str();
+  cmd->add_option("--bench-dir", options->bench_dir,
+                  "Folder of Google Benchmark JSON outputs for the speed claims (default: OUT/bench)");
+  cmd->add_flag("!--no-figures", options->figures, "Do not draw figures");
+  cmd->callback([options] { run(*options); });
+}
+
+}  // namespace affinterp::cli

@@ -1,0 +1,260 @@
+// `affinterp interpolate`: global interpolation (Kaji §4) between a source and a target mesh, written as
+// OBJ frames, a filmstrip (PNG + SVG), an animated GIF and per-frame metrics.
+#include "experiments/apps/cli/command.hpp"
+#include "experiments/support/progress.hpp"
+#include "experiments/support/staged_output.hpp"
+#include "experiments/inputs/constraint_spec.hpp"
+#include "experiments/inputs/mesh_file.hpp"
+#include "experiments/inputs/mesh_pair.hpp"
+#include "plots/mesh_animation.hpp"
+#include "plots/mesh_strip.hpp"
+#include "theory/global/interpolation.hpp"
+#include "theory/global/mesh_validation.hpp"
+#include "theory/global/metrics.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace affinterp::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct InterpolateOptions {
+  std::string source, target, out;
+  int frames = 30;
+  std::string local = "exp", energy = "R", rotation_branch = "consistent";
+  double blend_weight = 0.5;
+  std::string weights_file;
+  bool area_weights = true, symmetric = false, allow_flipped_target = false, figures = true;
+  std::vector<std::string> pins, loci, edges;
+  std::string barycentre = "linear";
+  std::string time_range = "0:1";
+};
+
+/// Frames drawn in the filmstrip: at most 8, evenly spread, first and last included.
+constexpr std::size_t filmstrip_frames = 8;
+
+std::pair<double, double> parse_time_range(const std::string& text) {
+  const auto colon = text.find(':');
+  double t0 = 0, t1 = 0;
+  std::istringstream a(text.substr(0, colon)), b(colon == std::string::npos ? "" : text.substr(colon + 1));
+  if (colon == std::string::npos || !(a >> t0) || !(b >> t1) || !a.eof() || !b.eof() || !std::isfinite(t0) ||
+      !std::isfinite(t1) || t0 >= t1)
+    throw CommandFailed("--time-range '" + text + "': expected T0:T1 with T0 < T1 (e.g. 0:1 or -0.5:1.5)", usage_error);
+  return {t0, t1};
+}
+
+global::InterpolationOptions engine_options(const InterpolateOptions& o, const io::MeshPair& pair) {
+  global::InterpolationOptions options;
+  try {
+    options.homotopy = global::parse_local_homotopy(o.local);
+    options.energy = global::parse_energy(o.energy);
+    options.rotation_branch = o.rotation_branch == "principal" ? global::RotationBranch::principal
+                                                               : global::RotationBranch::consistent;
+    options.blend_weight = o.blend_weight;
+    options.area_weighted = o.area_weights;
+    options.symmetric = o.symmetric;
+    for (const auto& spec : o.pins) options.constraints.pinned.push_back(io::parse_pin(spec));
+    for (const auto& spec : o.loci) options.constraints.loci.push_back(io::parse_locus(spec));
+    for (const auto& spec : o.edges) options.constraints.edges.push_back(io::parse_edge_direction(spec));
+    options.constraints.barycentre = io::parse_barycentre(o.barycentre);
+    io::check_constraint_vertices(options.constraints, pair.source.vertex_count());
+  } catch (const std::invalid_argument& e) {
+    throw CommandFailed(e.what(), usage_error);
+  }
+  if (!o.weights_file.empty()) {
+    try {
+      options.blend_weights = io::read_weights(o.weights_file);
+    } catch (const io::MeshFileError& e) {
+      throw CommandFailed(e.what(), 1);
+    }
+    if (options.blend_weights.size() != pair.source.triangle_count())
+      throw CommandFailed(o.weights_file + ": " + std::to_string(options.blend_weights.size()) + " weights for " +
+                              std::to_string(pair.source.triangle_count()) + " triangles (one w_i per line)",
+                          1);
+  }
+  std::tie(options.t_begin, options.t_end) = parse_time_range(o.time_range);
+  return options;
+}
+
+/// The default for E^S, E^R and blends, which are invariant under rotation and scale (Kaji §4): with no
+/// vertex or edge constraint given, the edge (corners 0, 1) of the source triangle nearest the barycentre
+/// follows its local homotopy, fixing the global rotation and scale as the barycentre fixes translation.
+std::optional<global::EdgeDirection> default_edge_direction(const InterpolateOptions& o, const global::Mesh& source) {
+  if (o.energy == "F" || !o.pins.empty() || !o.loci.empty() || !o.edges.empty()) return std::nullopt;
+  const Eigen::Vector2d barycentre = source.vertices.rowwise().mean();
+  Eigen::Index nearest = 0;
+  double best = std::numeric_limits<double>::infinity();
+  for (Eigen::Index i = 0; i < source.triangle_count(); ++i) {
+    const double d = ((source.corner(i, 0) + source.corner(i, 1) + source.corner(i, 2)) / 3 - barycentre).squaredNorm();
+    if (d < best) best = d, nearest = i;
+  }
+  return global::EdgeDirection{source.triangles(0, nearest), source.triangles(1, nearest),
+                               global::EdgeDirection::Path::local_homotopy, 1.0};
+}
+
+/// A number for JSON: null when not finite (a singular B_i gives σ1/σ2 = +∞).
+nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
+
+nlohmann::json metrics_json(const global::FrameMetrics& m) {
+  return {{"flipped_triangles", m.flipped_triangles}, {"min_det", finite_or_null(m.min_det)},
+          {"max_det", finite_or_null(m.max_det)},     {"max_distortion", finite_or_null(m.max_distortion)},
+          {"mean_distortion", finite_or_null(m.mean_distortion)}, {"area_ratio", finite_or_null(m.area_ratio)}};
+}
+
+std::string frame_name(int k) {
+  std::ostringstream name;
+  name << "frame_" << std::setw(4) << std::setfill('0') << k << ".obj";
+  return name.str();
+}
+
+std::string time_label(double t) {
+  std::ostringstream label;
+  label << "t = " << std::setprecision(3) << t;
+  return label.str();
+}
+
+void run(const InterpolateOptions& o) {
+  if (o.frames < 2) throw CommandFailed("--frames must be at least 2", usage_error);
+  io::MeshPair pair;
+  try {
+    pair = io::read_mesh_pair(o.source, o.target, {o.allow_flipped_target});
+  } catch (const io::MeshFileError& e) {
+    throw CommandFailed(e.what(), 1);
+  }
+  if (pair.reoriented) std::cerr << "note: the triangles ran clockwise; all were reversed (same shape)\n";
+  if (!pair.flipped_target_triangles.empty())
+    std::cerr << "note: " << pair.flipped_target_triangles.size() << " target triangle(s) flipped (allowed)\n";
+
+  global::InterpolationOptions options = engine_options(o, pair);
+  const auto default_edge = default_edge_direction(o, pair.source);
+  if (default_edge) options.constraints.edges.push_back(*default_edge);
+  std::unique_ptr<global::Interpolation> interpolation;
+  try {
+    interpolation = std::make_unique<global::Interpolation>(pair.source, pair.target, options);
+  } catch (const global::RefusedProblem& e) {
+    throw CommandFailed(std::string("refused: ") + e.what(), 1);
+  }
+
+  StagedOutput staged(o.out);
+  nlohmann::json frames = nlohmann::json::array();
+  std::vector<plots::MeshFrame> drawn;
+  const bool long_run = static_cast<double>(o.frames) * static_cast<double>(pair.source.triangle_count()) > 2e5;
+  std::optional<Progress> progress;
+  if (long_run) progress.emplace("interpolating", static_cast<std::size_t>(o.frames));
+  global::Mesh frame = pair.source;  // frames keep the files' face list, clockwise ones included
+  if (pair.reoriented) global::reverse_orientation(frame);
+  for (int k = 0; k < o.frames; ++k) {
+    const double t = options.t_begin + (options.t_end - options.t_begin) * k / (o.frames - 1);
+    frame.vertices = interpolation->vertices_at(t);
+    io::write_obj(frame, staged.staging() / frame_name(k));
+    nlohmann::json entry = {{"index", k}, {"t", t}, {"file", frame_name(k)}};
+    entry.update(metrics_json(global::frame_metrics(pair.source, frame.vertices)));
+    frames.push_back(entry);
+    if (o.figures) drawn.push_back({frame.vertices, time_label(t)});
+    if (progress) progress->advance();
+  }
+  progress.reset();  // ends the progress line before any other message
+
+  nlohmann::json document = {
+      {"source", o.source},
+      {"target", o.target},
+      {"vertices", pair.source.vertex_count()},
+      {"triangles", pair.source.triangle_count()},
+      {"reoriented", pair.reoriented},
+      {"flipped_target_triangles", pair.flipped_target_triangles},
+      {"options",
+       {{"local", o.local}, {"energy", o.energy}, {"rotation_branch", o.rotation_branch},
+        {"area_weights", o.area_weights}, {"symmetric", o.symmetric}, {"blend_weight", o.blend_weight},
+        {"weights_file", o.weights_file}, {"pins", o.pins}, {"loci", o.loci}, {"edge_directions", o.edges},
+        {"barycentre_locus", o.barycentre}, {"time_range", {options.t_begin, options.t_end}}}},
+      {"frames", frames}};
+  if (default_edge)
+    document["options"]["default_edge_direction"] = std::to_string(default_edge->i) + ":" + std::to_string(default_edge->j);
+  if (o.figures) {
+    std::vector<plots::MeshFrame> strip;
+    const std::size_t n = drawn.size(), shown = std::min(n, filmstrip_frames);
+    for (std::size_t j = 0; j < shown; ++j) strip.push_back(drawn[(2 * j * (n - 1) + shown - 1) / (2 * (shown - 1))]);
+    plots::draw_filmstrip(staged.staging() / "filmstrip", pair.source.triangles, strip,
+                          fs::path(o.source).filename().string() + " -> " + fs::path(o.target).filename().string() +
+                              " (" + o.local + ", E^" + o.energy + ")");
+    if (plots::write_animation_gif(staged.staging() / "animation.gif", pair.source.triangles, drawn))
+      document["animation"] = "animation.gif";
+    else
+      std::cerr << "note: ImageMagick's convert not found: no animation.gif\n";
+  }
+  std::ofstream(staged.staging() / "metrics.json") << document.dump(2) << "\n";
+
+  // Earlier frames beyond this run's count would mix two runs: remove them, then move the new files in.
+  std::error_code ignored;
+  if (fs::is_directory(o.out))
+    for (const auto& entry : fs::directory_iterator(o.out))
+      if (entry.path().filename().string().starts_with("frame_") && entry.path().extension() == ".obj")
+        fs::remove(entry.path(), ignored);
+  staged.commit();
+  int worst = 0;
+  for (const auto& f : frames) worst = std::max(worst, f["flipped_triangles"].get<int>());
+  std::cerr << "wrote " << o.frames << " frames to " << o.out << " (most flipped triangles in a frame: " << worst << ")\n";
+}
+
+}  // namespace
+
+void add_interpolate_command(CLI::App& app) {
+  auto o = std::make_shared<InterpolateOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "interpolate",
+      "Interpolate between two compatible 2D triangle meshes (Kaji et al. 2012, §3-4): writes OUT/frame_0000.obj ..., "
+      "OUT/filmstrip.png/.svg, OUT/animation.gif (with ImageMagick) and OUT/metrics.json. Vertex indices are 0-based "
+      "(the order of the v lines). Meshes: triangles only (polygons refused), z = 0; when every source triangle runs "
+      "clockwise all are reversed for the computation (frames keep the files' face list); mixed orientations, zero-area "
+      "source triangles and flipped target triangles (unless allowed) are refused. On any error OUT keeps its earlier "
+      "content.");
+  cmd->add_option("--source", o->source, "Source mesh (.obj or .off; z must be 0)")->required();
+  cmd->add_option("--target", o->target, "Target mesh with the same triangles")->required();
+  cmd->add_option("--out", o->out, "Output folder")->required();
+  cmd->add_option("--frames", o->frames, "Number of frames N (t = T0 + k (T1-T0)/(N-1))")->capture_default_str();
+  cmd->add_option("--local", o->local, "Local homotopy A_i(t): exp (R^t S^t, eq. 3), polar (eq. 2), linear, svd")
+      ->check(CLI::IsMember({"exp", "polar", "linear", "svd"}))
+      ->capture_default_str();
+  cmd->add_option("--energy", o->energy, "Local error E_i: F (Frobenius), S (similarity of points), R (eq. 4), blend")
+      ->check(CLI::IsMember({"F", "S", "R", "blend"}))
+      ->capture_default_str();
+  cmd->add_option("--rotation-branch", o->rotation_branch,
+                  "Polar angles: consistent (chosen across neighbours, may exceed pi) or principal (-pi, pi]")
+      ->check(CLI::IsMember({"consistent", "principal"}))
+      ->capture_default_str();
+  cmd->add_option("--blend-weight", o->blend_weight, "w in w E^F + (1-w) E^R for --energy blend")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--weights", o->weights_file, "File of per-triangle blend weights w_i, one per line (--energy blend)");
+  cmd->add_flag("--area-weights,!--no-area-weights", o->area_weights,
+                "Weight each E_i by its source triangle's area (default; --no-area-weights: plain sum)");
+  cmd->add_flag("--symmetric", o->symmetric, "Symmetric energy E(t) + E^-1(1-t)");
+  cmd->add_option("--pin", o->pins, "V[@C]: vertex V moves on the straight line p_V -> q_V (repeatable)");
+  cmd->add_option("--locus", o->loci,
+                  "V[@C]:x1,y1;x2,y2;...: vertex V follows the spline through the points at t = 0..1 (repeatable)");
+  cmd->add_option("--edge-direction", o->edges,
+                  "I:J[:homotopy|linear][@C]: edge v_I - v_J follows the local homotopy (default) or the straight path. "
+                  "With E^S, E^R or blend and no --pin/--locus/--edge-direction, one edge of the source triangle nearest "
+                  "the barycentre follows its local homotopy (fixes rotation and scale; listed in metrics.json)");
+  cmd->add_option("--barycentre-locus", o->barycentre,
+                  "linear[@C] | none | x1,y1;x2,y2;...[@C]: the barycentre's path (linear: source to target)")
+      ->capture_default_str();
+  cmd->add_option("--time-range", o->time_range, "T0:T1, the times of the first and last frame (extrapolation allowed)")
+      ->capture_default_str();
+  cmd->add_flag("--allow-flipped-target", o->allow_flipped_target, "Accept target triangles flipped against the source");
+  cmd->add_flag("!--no-figures", o->figures, "Write only frames and metrics.json (no filmstrip, no GIF)");
+  cmd->callback([o] { run(*o); });
+}
+
+}  // namespace affinterp::cli

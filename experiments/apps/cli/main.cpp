@@ -1,0 +1,37 @@
+// affinterp: the suite's command-line interface. Each command is in its own file (cmd_*.cpp).
+#include "experiments/apps/cli/command.hpp"
+
+#include <iostream>
+
+int main(int argc, char** argv) {
+  using namespace affinterp::cli;
+  CLI::App app{
+      "affinterp: decide the claims of Kaji et al. (SCA 2012) and Matsushita (thesis 2015) on rigid 2D "
+      "shape interpolation with affine maps, and run their algorithms.",
+      "affinterp"};
+  app.require_subcommand(1);
+  add_claims_command(app);
+  add_report_command(app);
+  add_exp3_command(app);
+  add_eig3_command(app);
+  add_shapes_command(app);
+  add_interpolate_command(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "affinterp: " << e.what() << " (see --help)\n";
+    return usage_error;
+  } catch (const CommandFailed& e) {
+    std::cerr << "affinterp: " << e.what() << "\n";
+    return e.status;
+  } catch (const std::exception& e) {
+    std::cerr << "affinterp: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
