@@ -12,7 +12,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev
   libcgal-dev libcgal-demo libxsimd-dev
   libginac-dev
-  clang libclang-rt-14-dev
+  clang libclang-rt-14-dev clang-format
 )
 missing=()
 for p in "${packages[@]}"; do
