@@ -61,13 +61,8 @@ Outcome check(const ClaimContext& ctx) {
       cases.push_back(A);
     }
   const auto cost = [](const Mat2<Rational>& A) { return height(A.trace()) + height(det2(A)); };
-  const auto property = [](const Mat2<Rational>& A) { return good_for_area(A); };
-  const auto printed = compare_over(
-      cases, ctx.threads, [](const Mat2<Rational>& A) { return thm_2_2_1_condition<Rational>(A.trace(), det2(A)); },
-      property, cost);
-  const auto corrected = compare_over(
-      cases, ctx.threads,
-      [](const Mat2<Rational>& A) { return corrected_area_condition<Rational>(A.trace(), det2(A)); }, property, cost);
+  const auto identity = [](const Mat2<Rational>& A) { return A; };  // A_l(t) = (1−t)I + tA
+  const auto [printed, corrected] = tally_area_conditions(cases, ctx.threads, identity, cost);
 
   Outcome outcome;
   outcome.evidence.method = "exact rational decision of Def 2.2.1 vs the printed condition over a (tr A, det A) grid";
@@ -98,8 +93,7 @@ Outcome check(const ClaimContext& ctx) {
         [](const Mat2<Rational>& A) {
           return std::pair{static_cast<double>(A.trace()), static_cast<double>(det2(A))};
         },
-        [](const Mat2<Rational>& A) { return thm_2_2_1_condition<Rational>(A.trace(), det2(A)); },
-        [](const Mat2<Rational>& A) { return A; }, step);
+        identity, step);
   return outcome;
 }
 

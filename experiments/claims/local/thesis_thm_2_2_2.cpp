@@ -34,15 +34,8 @@ Outcome check(const ClaimContext& ctx) {
     for (const Rational& y : grid(step, x, step)) cases.emplace_back(x, y);
   using Case = std::pair<Rational, Rational>;
   const auto cost = [](const Case& c) { return height(c.first) + height(c.second); };
-  const auto property = [](const Case& c) { return good_for_area(diagonal(c.first, c.second)); };
-  const auto printed = compare_over(
-      cases, ctx.threads,
-      [](const Case& c) { return thm_2_2_1_condition<Rational>(c.first + c.second, c.first * c.second); }, property,
-      cost);
-  const auto corrected = compare_over(
-      cases, ctx.threads,
-      [](const Case& c) { return corrected_area_condition<Rational>(c.first + c.second, c.first * c.second); },
-      property, cost);
+  const auto D_of = [](const Case& c) { return diagonal(c.first, c.second); };  // det A_s(t) = det((1−t)I + tD)
+  const auto [printed, corrected] = tally_area_conditions(cases, ctx.threads, D_of, cost);
 
   Outcome outcome;
   outcome.evidence.method =
@@ -71,8 +64,7 @@ Outcome check(const ClaimContext& ctx) {
         [](const Case& c) {
           return std::pair{static_cast<double>(c.first), static_cast<double>(c.second)};
         },
-        [](const Case& c) { return thm_2_2_1_condition<Rational>(c.first + c.second, c.first * c.second); },
-        [](const Case& c) { return diagonal(c.first, c.second); }, step);
+        D_of, step);
   return outcome;
 }
 

@@ -39,21 +39,7 @@ Outcome check(const ClaimContext& ctx) {
     return height(std::get<0>(c)) + height(std::get<1>(c)) + height(std::get<2>(c));
   };
   const auto S_of = [](const Case& c) { return symmetric(std::get<0>(c), std::get<1>(c), std::get<2>(c)); };
-  const auto property = [&](const Case& c) { return good_for_area(S_of(c)); };
-  const auto printed = compare_over(
-      cases, ctx.threads,
-      [&](const Case& c) {
-        const auto S = S_of(c);
-        return thm_2_2_1_condition<Rational>(S.trace(), det2(S));
-      },
-      property, cost);
-  const auto corrected = compare_over(
-      cases, ctx.threads,
-      [&](const Case& c) {
-        const auto S = S_of(c);
-        return corrected_area_condition<Rational>(S.trace(), det2(S));
-      },
-      property, cost);
+  const auto [printed, corrected] = tally_area_conditions(cases, ctx.threads, S_of, cost);
 
   Outcome outcome;
   outcome.evidence.method =
@@ -84,10 +70,6 @@ Outcome check(const ClaimContext& ctx) {
         "Thm 2.2.4 (polar interpolation), slice h = 1/2: printed condition vs good for area", "x", "y", slice,
         [](const Case& c) {
           return std::pair{static_cast<double>(std::get<0>(c)), static_cast<double>(std::get<1>(c))};
-        },
-        [&](const Case& c) {
-          const auto S = S_of(c);
-          return thm_2_2_1_condition<Rational>(S.trace(), det2(S));
         },
         S_of, step);
   }
