@@ -5,34 +5,32 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 namespace affinterp::claims {
 namespace {
 
+/// The IDs of the local chapter's claims.
+std::vector<std::string> local_claims() {
+  std::vector<std::string> ids;
+  for (const Claim& claim : registered_claims().claims())
+    if (claim.chapter == Chapter::local) ids.emplace_back(claim.id);
+  return ids;
+}
+
 class FullSize : public testing::TestWithParam<std::string> {};
 
 TEST_P(FullSize, AgreesWithQuickSize) {
-  static const CheckRegistry registry = build_registry();
-  const Check* check = registry.find(GetParam());
-  ASSERT_NE(check, nullptr);
+  const Claim& claim = *registered_claims().find(GetParam());
   RunContext quick, full;
   quick.size = Size::quick, full.size = Size::full;
   quick.threads = full.threads = 2;
-  const Outcome at_quick = (*check)(quick), at_full = (*check)(full);
+  const Outcome at_quick = claim.check(quick.for_claim(claim.id)), at_full = claim.check(full.for_claim(claim.id));
   EXPECT_EQ(to_string(at_full.verdict), to_string(at_quick.verdict)) << at_full.summary;
 }
 
-INSTANTIATE_TEST_SUITE_P(Local, FullSize,
-                         testing::Values("kaji.eq1.affine-map", "kaji.polar.det", "kaji.polar.degenerate", "kaji.svd.degenerate",
-                                         "kaji.exp.endpoints", "kaji.exp.det-positive", "kaji.exp.det-monotone",
-                                         "kaji.appendix.polar-from-svd", "thesis.thm-2.2.1", "thesis.thm-2.2.2",
-                                         "thesis.thm-2.2.3", "thesis.thm-2.2.4", "thesis.thm-2.2.5", "thesis.thm-2.2.6"),
-                         [](const testing::TestParamInfo<std::string>& info) {
-                           std::string name = info.param;
-                           for (char& c : name)
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Local, FullSize, testing::ValuesIn(local_claims()),
+                         [](const testing::TestParamInfo<std::string>& info) { return file_stem(info.param); });
 
 }  // namespace
 }  // namespace affinterp::claims

@@ -1,6 +1,6 @@
-// The speed verdicts of thesis §3.4 (experiments/claims/sym3/speed.hpp) on synthetic benchmark JSON:
-// absent data is inconclusive, and the verdict follows the measured ratio both ways.
-#include "experiments/claims/sym3/speed.hpp"
+// The speed verdicts of thesis §3.4 (experiments/claims/sym3/thesis_*_speedup.cpp) on synthetic benchmark
+// JSON: absent data is inconclusive, and the verdict follows the measured ratio both ways.
+#include "experiments/claims/registry.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -10,7 +10,7 @@
 #include <map>
 #include <string>
 
-namespace affinterp::claims::sym3 {
+namespace affinterp::claims {
 namespace {
 
 namespace fs = std::filesystem;
@@ -20,33 +20,44 @@ namespace fs = std::filesystem;
 fs::path write_bench(const std::string& bench, const std::string& counter, const std::map<std::string, double>& times) {
   // One folder per test and call: CTest runs the tests in parallel processes.
   static int call = 0;
-  const fs::path dir = fs::temp_directory_path() /
-                       ("affinterp_speed_test_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()) +
-                        "_" + std::to_string(++call));
+  const fs::path dir =
+      fs::temp_directory_path() /
+      ("affinterp_speed_test_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+       std::to_string(++call));
   fs::create_directories(dir);
   nlohmann::json runs = nlohmann::json::array();
   for (const auto& [name, value] : times) {
-    runs.push_back({{"name", name + "_mean"}, {"run_name", name + "/min_time:0.200/repeats:5"}, {"run_type", "aggregate"},
-                    {"aggregate_name", "mean"}, {counter, 2 * value}});
-    runs.push_back({{"name", name + "_median"}, {"run_name", name + "/min_time:0.200/repeats:5"}, {"run_type", "aggregate"},
-                    {"aggregate_name", "median"}, {counter, value}});
+    runs.push_back({{"name", name + "_mean"},
+                    {"run_name", name + "/min_time:0.200/repeats:5"},
+                    {"run_type", "aggregate"},
+                    {"aggregate_name", "mean"},
+                    {counter, 2 * value}});
+    runs.push_back({{"name", name + "_median"},
+                    {"run_name", name + "/min_time:0.200/repeats:5"},
+                    {"run_type", "aggregate"},
+                    {"aggregate_name", "median"},
+                    {counter, value}});
   }
   std::ofstream(dir / (bench + ".json")) << nlohmann::json{
-      {"context", {{"affinterp_cpu", "Test CPU"}}}, {"benchmarks", runs}}.dump();
+      {"context", {{"affinterp_cpu", "Test CPU"}}},
+      {"benchmarks", runs}}.dump();
   return dir;
 }
 
-RunContext with_bench(const fs::path& dir) {
-  RunContext ctx;
-  ctx.bench_dir = dir;
-  return ctx;
+/// The outcome of a declared claim's check run on the benchmark files of `bench_dir`.
+Outcome run_on(std::string_view claim_id, const fs::path& bench_dir) {
+  RunContext run;
+  run.bench_dir = bench_dir;
+  return registered_claims().find(claim_id)->check(run.for_claim(claim_id));
 }
+Outcome check_eig_speedup(const fs::path& bench_dir) { return run_on("thesis.eig.speedup", bench_dir); }
+Outcome check_exp_speedup(const fs::path& bench_dir) { return run_on("thesis.exp.speedup", bench_dir); }
+Outcome check_app_speedup(const fs::path& bench_dir) { return run_on("thesis.app.speedup", bench_dir); }
 
 TEST(SpeedClaims, AreInconclusiveWithoutBenchmarkData) {
-  RunContext ctx;
-  ctx.bench_dir = fs::temp_directory_path() / "affinterp_no_such_folder";
+  const fs::path nowhere = fs::temp_directory_path() / "affinterp_no_such_folder";
   for (auto check : {check_eig_speedup, check_exp_speedup, check_app_speedup}) {
-    const Outcome outcome = check(ctx);
+    const Outcome outcome = check(nowhere);
     EXPECT_EQ(outcome.verdict, Verdict::inconclusive);
     EXPECT_NE(outcome.summary.find("bench_"), std::string::npos) << outcome.summary;
   }
@@ -54,36 +65,40 @@ TEST(SpeedClaims, AreInconclusiveWithoutBenchmarkData) {
 
 TEST(SpeedClaims, EigenvalueVerdictFollowsTheMeasuredRatio) {
   auto near = write_bench("bench_exp3", "ns_per_matrix", {{"eig3/eigen-qr", 100}, {"eig3/viete", 30}});
-  const Outcome reproduced = check_eig_speedup(with_bench(near));
+  const Outcome reproduced = check_eig_speedup(near);
   EXPECT_EQ(reproduced.verdict, Verdict::reproduced) << reproduced.summary;
   EXPECT_NEAR(reproduced.evidence.measurements["measured_ratio"].get<double>(), 100.0 / 30, 1e-12);
   EXPECT_EQ(reproduced.evidence.measurements["machine"]["cpu"], "Test CPU");
 
   auto far = write_bench("bench_exp3", "ns_per_matrix", {{"eig3/eigen-qr", 100}, {"eig3/viete", 90}});
-  EXPECT_EQ(check_eig_speedup(with_bench(far)).verdict, Verdict::not_reproduced);
+  EXPECT_EQ(check_eig_speedup(far).verdict, Verdict::not_reproduced);
 }
 
 TEST(SpeedClaims, ExponentialNeedsPlainSdInBetween) {
-  auto ordered = write_bench("bench_exp3", "ns_per_matrix",
-                             {{"exp3/eigen-qr-diag", 420}, {"exp3/thesis-sd-corrected", 200}, {"exp3/thesis-improved-sd", 100}});
-  EXPECT_EQ(check_exp_speedup(with_bench(ordered)).verdict, Verdict::reproduced);
-  auto disordered = write_bench("bench_exp3", "ns_per_matrix",
-                                {{"exp3/eigen-qr-diag", 420}, {"exp3/thesis-sd-corrected", 90}, {"exp3/thesis-improved-sd", 100}});
-  EXPECT_EQ(check_exp_speedup(with_bench(disordered)).verdict, Verdict::not_reproduced);
+  auto ordered =
+      write_bench("bench_exp3", "ns_per_matrix",
+                  {{"exp3/eigen-qr-diag", 420}, {"exp3/thesis-sd-corrected", 200}, {"exp3/thesis-improved-sd", 100}});
+  EXPECT_EQ(check_exp_speedup(ordered).verdict, Verdict::reproduced);
+  auto disordered =
+      write_bench("bench_exp3", "ns_per_matrix",
+                  {{"exp3/eigen-qr-diag", 420}, {"exp3/thesis-sd-corrected", 90}, {"exp3/thesis-improved-sd", 100}});
+  EXPECT_EQ(check_exp_speedup(disordered).verdict, Verdict::not_reproduced);
 }
 
 TEST(SpeedClaims, ApplicationSlowdownIsNotReproduced) {
-  auto slower = write_bench("bench_app3", "ns_per_frame", {{"app/eigen-qr-diag", 10e6}, {"app/thesis-improved-sd", 11e6}});
-  EXPECT_EQ(check_app_speedup(with_bench(slower)).verdict, Verdict::not_reproduced);
-  auto faster = write_bench("bench_app3", "ns_per_frame", {{"app/eigen-qr-diag", 12e6}, {"app/thesis-improved-sd", 10e6}});
-  EXPECT_EQ(check_app_speedup(with_bench(faster)).verdict, Verdict::reproduced);
+  auto slower =
+      write_bench("bench_app3", "ns_per_frame", {{"app/eigen-qr-diag", 10e6}, {"app/thesis-improved-sd", 11e6}});
+  EXPECT_EQ(check_app_speedup(slower).verdict, Verdict::not_reproduced);
+  auto faster =
+      write_bench("bench_app3", "ns_per_frame", {{"app/eigen-qr-diag", 12e6}, {"app/thesis-improved-sd", 10e6}});
+  EXPECT_EQ(check_app_speedup(faster).verdict, Verdict::reproduced);
 }
 
 TEST(SpeedClaims, UnreadableBenchmarkOutputIsInconclusive) {
   const fs::path dir = fs::temp_directory_path() / "affinterp_speed_test_unreadable";
   fs::create_directories(dir);
   std::ofstream(dir / "bench_exp3.json") << "{\"benchmarks\": [{\"cv\": NaN}]}";
-  const Outcome outcome = check_eig_speedup(with_bench(dir));
+  const Outcome outcome = check_eig_speedup(dir);
   EXPECT_EQ(outcome.verdict, Verdict::inconclusive);
   EXPECT_NE(outcome.summary.find("unreadable"), std::string::npos) << outcome.summary;
 }
@@ -93,13 +108,18 @@ TEST(SpeedClaims, ApplicationWithoutMeshDataIsInconclusive) {
   fs::create_directories(dir);
   nlohmann::json runs = nlohmann::json::array();
   for (const char* name : {"app/eigen-qr-diag", "app/thesis-improved-sd"})
-    runs.push_back({{"name", name}, {"run_name", name}, {"run_type", "iteration"}, {"error_occurred", true},
+    runs.push_back({{"name", name},
+                    {"run_name", name},
+                    {"run_type", "iteration"},
+                    {"error_occurred", true},
                     {"error_message", "the CGAL demo data is absent"}});
-  std::ofstream(dir / "bench_app3.json") << nlohmann::json{{"context", nlohmann::json::object()}, {"benchmarks", runs}}.dump();
-  const Outcome outcome = check_app_speedup(with_bench(dir));
+  std::ofstream(dir / "bench_app3.json") << nlohmann::json{
+      {"context", nlohmann::json::object()},
+      {"benchmarks", runs}}.dump();
+  const Outcome outcome = check_app_speedup(dir);
   EXPECT_EQ(outcome.verdict, Verdict::inconclusive);
   EXPECT_NE(outcome.summary.find("CGAL demo data is absent"), std::string::npos) << outcome.summary;
 }
 
 }  // namespace
-}  // namespace affinterp::claims::sym3
+}  // namespace affinterp::claims

@@ -1,6 +1,5 @@
 #include "experiments/claims/claims_json.hpp"
 
-#include "experiments/claims/catalogue.hpp"
 #include "experiments/claims/engine_speed.hpp"
 
 #include <chrono>
@@ -10,9 +9,7 @@ namespace affinterp::claims {
 
 namespace {
 
-nlohmann::json optional_json(const auto& value) {
-  return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
-}
+nlohmann::json optional_json(const auto& value) { return value ? nlohmann::json(*value) : nlohmann::json(nullptr); }
 
 std::string utc_now() {
   const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
@@ -29,10 +26,10 @@ nlohmann::json to_json(const ClaimResult& result) {
   const Outcome& o = result.outcome;
   const Evidence& e = o.evidence;
   return {
-      {"id", result.info->id},
-      {"group", result.info->group},
-      {"where", result.info->where},
-      {"statement", result.info->statement},
+      {"id", result.claim->id},
+      {"group", report_section(result.claim->chapter)},
+      {"where", result.claim->where},
+      {"statement", result.claim->statement},
       {"verdict", to_string(o.verdict)},
       {"summary", o.summary},
       {"evidence",
@@ -50,17 +47,18 @@ nlohmann::json to_json(const ClaimResult& result) {
   };
 }
 
-nlohmann::json claims_document(const std::vector<ClaimResult>& results, const RunContext& context,
-                               const nlohmann::json& environment, const nlohmann::json& previous) {
+nlohmann::json claims_document(const ClaimRegistry& registry, const std::vector<ClaimResult>& results,
+                               const RunContext& context, const nlohmann::json& environment,
+                               const nlohmann::json& previous) {
   nlohmann::json claims = nlohmann::json::array();
-  for (const auto& info : catalogue()) {
+  for (const Claim& claim : registry.claims()) {
     const nlohmann::json* entry = nullptr;
     nlohmann::json fresh;
     for (const auto& r : results)
-      if (r.info->id == info.id) entry = &(fresh = to_json(r));
+      if (r.claim->id == claim.id) entry = &(fresh = to_json(r));
     if (entry == nullptr && previous.contains("claims"))
       for (const auto& old : previous["claims"])
-        if (old.value("id", "") == info.id) entry = &old;
+        if (old.value("id", "") == claim.id) entry = &old;
     if (entry != nullptr) claims.push_back(*entry);
   }
   return {

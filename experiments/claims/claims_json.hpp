@@ -13,9 +13,11 @@ namespace affinterp::claims {
 /// figures, seconds.
 nlohmann::json to_json(const ClaimResult& result);
 
-/// The whole document. When `previous` is an earlier document, its entries for claims not in
-/// `results` are kept, so that a run with --only updates just those claims.
-nlohmann::json claims_document(const std::vector<ClaimResult>& results, const RunContext& context,
-                               const nlohmann::json& environment, const nlohmann::json& previous);
+/// The whole document, one entry per claim of `registry` in run order. When `previous` is an earlier
+/// document, its entries for claims not in `results` are kept, so that a run with --only updates just
+/// those claims.
+nlohmann::json claims_document(const ClaimRegistry& registry, const std::vector<ClaimResult>& results,
+                               const RunContext& context, const nlohmann::json& environment,
+                               const nlohmann::json& previous);
 
 }  // namespace affinterp::claims

@@ -12,7 +12,7 @@ std::uint64_t RunContext::seed_for(std::string_view claim_id) const {
   return z ^ (z >> 31);
 }
 
-std::vector<std::string> RunContext::figure_refs(const std::vector<std::string>& file_names) {
+std::vector<std::string> RunSettings::figure_refs(const std::vector<std::string>& file_names) {
   std::vector<std::string> refs;
   for (const std::string& name : file_names) refs.push_back(figure_ref(name));
   return refs;

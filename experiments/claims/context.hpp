@@ -1,5 +1,5 @@
 #pragma once
-// The settings a check runs under: seed, size, threads, and where figures and benchmark data live.
+// The settings a check runs under: the run's size, threads and folders, and the claim's own seed.
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -13,8 +13,8 @@ enum class Size {
   full,   ///< the sizes the report states, for the main job
 };
 
-struct RunContext {
-  std::uint64_t seed = 2012;
+/// What every check of a run shares: sweep size, threads, and where figures and benchmark data live.
+struct RunSettings {
   Size size = Size::full;
   unsigned threads = 1;
   /// Where checks draw their figures; empty means draw none.
@@ -27,9 +27,6 @@ struct RunContext {
   T pick(T quick, T full) const {
     return size == Size::quick ? quick : full;
   }
-  /// A seed for one claim's sample, derived from the run's seed and the claim's ID, so that adding
-  /// or reordering claims never changes another claim's sample.
-  std::uint64_t seed_for(std::string_view claim_id) const;
   bool draws_figures() const { return !figure_dir.empty(); }
   /// The file stem a figure is drawn to (extensions are added by the plotter).
   std::filesystem::path figure_stem(std::string_view name) const { return figure_dir / name; }
@@ -37,6 +34,24 @@ struct RunContext {
   static std::string figure_ref(std::string_view file_name) { return "figures/" + std::string(file_name); }
   /// figure_ref of each file drawn into figure_dir.
   static std::vector<std::string> figure_refs(const std::vector<std::string>& file_names);
+};
+
+/// What one check runs under, as the engine hands it over: the run's settings, the claim's ID and the
+/// claim's own seed. A check draws every random sample from `seed` and never names its own ID.
+struct ClaimContext : RunSettings {
+  std::string_view claim_id;
+  std::uint64_t seed = 0;  ///< RunContext::seed_for(claim_id)
+};
+
+/// A run: the settings and the run's seed, from which each claim's seed is derived.
+struct RunContext : RunSettings {
+  std::uint64_t seed = 2012;
+
+  /// A seed for one claim's sample, derived from the run's seed and the claim's ID, so that adding
+  /// or reordering claims never changes another claim's sample.
+  std::uint64_t seed_for(std::string_view claim_id) const;
+  /// The context the check of `claim_id` runs under.
+  ClaimContext for_claim(std::string_view claim_id) const { return {{*this}, claim_id, seed_for(claim_id)}; }
 };
 
 std::string_view to_string(Size size);

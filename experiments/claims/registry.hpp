@@ -1,37 +1,33 @@
 #pragma once
-// Which check decides which claim. Each body of theory registers its checks in one function, called
-// from build_registry(); a catalogued claim without a check is reported as `pending`.
-#include "experiments/claims/context.hpp"
-#include "experiments/claims/outcome.hpp"
+// The claims the suite decides. Every claim file registers its claim (claim.hpp) into one registry, read
+// by registered_claims(); there is no list to update. The registry keeps its claims in run order, whatever
+// order the program's static initialisation added them in.
+#include "experiments/claims/claim.hpp"
 
-#include <functional>
-#include <map>
-#include <string>
+#include <span>
 #include <string_view>
+#include <vector>
 
 namespace affinterp::claims {
 
-using Check = std::function<Outcome(const RunContext&)>;
-
-class CheckRegistry {
+class ClaimRegistry {
  public:
-  /// Registers the check of a catalogued claim; throws std::logic_error for an unknown or
-  /// already-registered ID.
-  void add(std::string_view claim_id, Check check);
-  const Check* find(std::string_view claim_id) const;
-  std::size_t size() const { return checks_.size(); }
+  /// Adds a claim; throws std::logic_error for an ID not of the form kaji.* or thesis.* (letters, digits,
+  /// '.', '-'), an ID already added, or an empty `where` or `statement`.
+  void add(Claim claim);
+  /// The claims in run order (run_order).
+  std::span<const Claim> claims() const { return claims_; }
+  const Claim* find(std::string_view claim_id) const;
 
  private:
-  std::map<std::string, Check, std::less<>> checks_;
+  std::vector<Claim> claims_;
 };
 
-// One registration function per body of theory (experiments/claims/<part>/register.cpp).
-void register_local_checks(CheckRegistry& registry);
-void register_global_checks(CheckRegistry& registry);
-void register_origin_checks(CheckRegistry& registry);
-void register_sym3_checks(CheckRegistry& registry);
+/// Every claim declared in the program (a ClaimDeclaration per claim file).
+const ClaimRegistry& registered_claims();
 
-/// Every check the suite has.
-CheckRegistry build_registry();
+/// The run and report order: by chapter (local, global, origin, sym3), then by ID, comparing runs of
+/// digits as numbers ("thesis.thm-2.2.9" before "thesis.thm-2.2.10").
+bool run_order(const Claim& a, const Claim& b);
 
 }  // namespace affinterp::claims

@@ -9,27 +9,27 @@
 
 namespace affinterp::claims {
 
-std::vector<ClaimResult> run_claims(const CheckRegistry& registry, const RunContext& context,
+std::vector<ClaimResult> run_claims(const ClaimRegistry& registry, const RunContext& context,
                                     const std::vector<std::string>& ids, std::ostream& progress) {
   for (const auto& id : ids)
-    if (find_claim(id) == nullptr) throw std::invalid_argument("unknown claim ID '" + id + "' (see --list)");
+    if (registry.find(id) == nullptr) throw std::invalid_argument("unknown claim ID '" + id + "' (see --list)");
 
-  std::vector<const ClaimInfo*> selected;
-  for (const auto& info : catalogue())
-    if (ids.empty() || std::find(ids.begin(), ids.end(), info.id) != ids.end()) selected.push_back(&info);
+  std::vector<const Claim*> selected;
+  for (const Claim& claim : registry.claims())
+    if (ids.empty() || std::find(ids.begin(), ids.end(), claim.id) != ids.end()) selected.push_back(&claim);
 
   std::vector<ClaimResult> results;
   std::size_t index = 0;
-  for (const ClaimInfo* info : selected) {
+  for (const Claim* claim : selected) {
     ++index;
-    ClaimResult result{info, {}, 0, {}};
+    ClaimResult result{claim, {}, 0, {}};
     std::ostringstream line;
-    line << "[" << std::setw(2) << index << "/" << selected.size() << "] " << info->id << " ... ";
+    line << "[" << std::setw(2) << index << "/" << selected.size() << "] " << claim->id << " ... ";
     progress << line.str() << std::flush;
-    if (const Check* check = registry.find(info->id)) {
+    if (claim->check) {
       const auto start = std::chrono::steady_clock::now();
       try {
-        result.outcome = (*check)(context);
+        result.outcome = claim->check(context.for_claim(claim->id));
       } catch (const std::exception& e) {
         result.error = e.what();
       }
@@ -39,8 +39,8 @@ std::vector<ClaimResult> run_claims(const CheckRegistry& registry, const RunCont
     }
     progress << "\r" << line.str();  // a check's Progress may have overwritten the line meanwhile
     if (result.error.empty())
-      progress << to_string(result.outcome.verdict) << " (" << std::fixed << std::setprecision(2)
-               << result.seconds << " s)\n";
+      progress << to_string(result.outcome.verdict) << " (" << std::fixed << std::setprecision(2) << result.seconds
+               << " s)\n";
     else
       progress << "FAILED TO RUN: " << result.error << "\n";
     results.push_back(std::move(result));

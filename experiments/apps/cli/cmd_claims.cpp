@@ -1,5 +1,4 @@
 // `affinterp claims`: run the checks, write claims.json and REPORT.md.
-#include "experiments/claims/catalogue.hpp"
 #include "experiments/claims/claims_json.hpp"
 #include "experiments/claims/registry.hpp"
 #include "experiments/claims/runner.hpp"
@@ -33,10 +32,10 @@ struct ClaimsOptions {
   bool figures = true;
 };
 
-void list_claims(const CheckRegistry& registry) {
-  for (const auto& info : catalogue())
-    std::cout << info.id << "\t" << (registry.find(info.id) ? "implemented" : "pending") << "\t" << info.where
-              << "\t" << info.statement << "\n";
+void list_claims(const ClaimRegistry& registry) {
+  for (const Claim& claim : registry.claims())
+    std::cout << claim.id << "\t" << (claim.check ? "implemented" : "pending") << "\t" << claim.where << "\t"
+              << claim.statement << "\n";
 }
 
 nlohmann::json read_previous(const fs::path& file) {
@@ -52,7 +51,7 @@ void write_file(const fs::path& file, const std::string& text) {
 }
 
 void run(const ClaimsOptions& options) {
-  const CheckRegistry registry = build_registry();
+  const ClaimRegistry& registry = registered_claims();
   if (options.list) return list_claims(registry);
 
   RunContext context;
@@ -83,7 +82,7 @@ void run(const ClaimsOptions& options) {
 
   const fs::path previous_file = fs::path(options.out) / "claims.json";
   const nlohmann::json document =
-      claims_document(results, context, environment_description(), read_previous(previous_file));
+      claims_document(registry, results, context, environment_description(), read_previous(previous_file));
   write_file(staged.staging() / "claims.json", document.dump(2) + "\n");
   write_file(staged.staging() / "REPORT.md", report::render_markdown(document));
   staged.commit();

@@ -42,7 +42,7 @@ Eigen::Index extreme_vertex(const global::Mesh& mesh, const Eigen::Vector2d& dir
   return best;
 }
 
-std::vector<std::string> draw_animations(const RunContext& ctx, const std::string& name, const global::Mesh& source,
+std::vector<std::string> draw_animations(const RunSettings& ctx, const std::string& name, const global::Mesh& source,
                                          const std::vector<Animation>& animations, const std::vector<int>& shown_frames,
                                          const std::string& title) {
   std::vector<std::string> refs;
@@ -54,15 +54,17 @@ std::vector<std::string> draw_animations(const RunContext& ctx, const std::strin
       frames.push_back({animations[a].frames[static_cast<std::size_t>(k)], label});
     }
     const std::string stem = name + "-" + std::to_string(a + 1);
-    for (const auto& file : plots::draw_filmstrip(ctx.figure_stem(stem), source.triangles, frames,
-                                                  title + ": " + animations[a].label))
-      if (file.ends_with(".png")) refs.push_back(RunContext::figure_ref(std::filesystem::path(file).filename().string()));
+    for (const auto& file :
+         plots::draw_filmstrip(ctx.figure_stem(stem), source.triangles, frames, title + ": " + animations[a].label))
+      if (file.ends_with(".png"))
+        refs.push_back(RunSettings::figure_ref(std::filesystem::path(file).filename().string()));
   }
   plots::Table table;
   for (std::size_t k = 0; k < animations.front().t.size(); ++k) {
     plots::Row row{animations.front().t[k]};
     for (const auto& animation : animations)
-      row.push_back(animation.metrics[k].min_det), row.push_back(static_cast<double>(animation.metrics[k].flipped_triangles));
+      row.push_back(animation.metrics[k].min_det),
+          row.push_back(static_cast<double>(animation.metrics[k].flipped_triangles));
     table.push_back(row);
   }
   std::string plot_det = "plot ", plot_flips = "plot ";
@@ -81,7 +83,7 @@ std::vector<std::string> draw_animations(const RunContext& ctx, const std::strin
                                  "\nset ylabel 'flipped triangles'\n" + plot_flips + "\nunset multiplot\n")
                          .render();
   for (const auto& file : files)
-    if (file.ends_with(".png")) refs.push_back(RunContext::figure_ref(file));
+    if (file.ends_with(".png")) refs.push_back(RunSettings::figure_ref(file));
   return refs;
 }
 
@@ -95,7 +97,7 @@ double worst_locus_distance(const Animation& animation, const std::vector<global
   return worst;
 }
 
-std::vector<std::string> draw_loci_overlays(const RunContext& ctx, const std::string& name, const global::Mesh& source,
+std::vector<std::string> draw_loci_overlays(const RunSettings& ctx, const std::string& name, const global::Mesh& source,
                                             const std::vector<Animation>& animations,
                                             const std::vector<global::VertexLocus>& loci,
                                             const std::vector<int>& shown_frames, const std::string& title) {
@@ -119,7 +121,8 @@ std::vector<std::string> draw_loci_overlays(const RunContext& ctx, const std::st
     const std::string stem = name + "-loci-" + std::to_string(a + 1);
     for (const auto& file : plots::draw_overlay(ctx.figure_stem(stem), source.triangles, frames, curves,
                                                 title + ": " + animation.label + " (frames light to dark in time)"))
-      if (file.ends_with(".png")) refs.push_back(RunContext::figure_ref(std::filesystem::path(file).filename().string()));
+      if (file.ends_with(".png"))
+        refs.push_back(RunSettings::figure_ref(std::filesystem::path(file).filename().string()));
   }
   return refs;
 }

@@ -29,7 +29,7 @@ Eigen::Index extreme_vertex(const global::Mesh& mesh, const Eigen::Vector2d& dir
 
 /// Draws a filmstrip per animation (frames at the given indices) and one chart of min det B_i(t) and the
 /// flip count against t for all of them; returns the figure references for Outcome::figures.
-std::vector<std::string> draw_animations(const RunContext& ctx, const std::string& name, const global::Mesh& source,
+std::vector<std::string> draw_animations(const RunSettings& ctx, const std::string& name, const global::Mesh& source,
                                          const std::vector<Animation>& animations, const std::vector<int>& shown_frames,
                                          const std::string& title);
 
@@ -38,7 +38,7 @@ double worst_locus_distance(const Animation& animation, const std::vector<global
 
 /// Draws, per animation, the frames at `shown_frames` superimposed with each prescribed locus u_k(t) (its
 /// points marked) and the path v_k(t) the vertex took over all frames; returns the figure references.
-std::vector<std::string> draw_loci_overlays(const RunContext& ctx, const std::string& name, const global::Mesh& source,
+std::vector<std::string> draw_loci_overlays(const RunSettings& ctx, const std::string& name, const global::Mesh& source,
                                             const std::vector<Animation>& animations,
                                             const std::vector<global::VertexLocus>& loci,
                                             const std::vector<int>& shown_frames, const std::string& title);

@@ -17,6 +17,12 @@ global::Corners<Rational> RationalMeshPair::corners(const Eigen::Matrix<Rational
 
 Mat2Q RationalMeshPair::linear_part(Eigen::Index i) const { return global::linear_part(corners(P, i), corners(Q, i)); }
 
+std::vector<Mat2Q> RationalMeshPair::linear_parts() const {
+  std::vector<Mat2Q> A;
+  for (Eigen::Index i = 0; i < triangles.cols(); ++i) A.push_back(linear_part(i));
+  return A;
+}
+
 nlohmann::json RationalMeshPair::to_json() const {
   nlohmann::json triangle_list = nlohmann::json::array();
   for (Eigen::Index i = 0; i < triangles.cols(); ++i)
@@ -27,6 +33,16 @@ nlohmann::json RationalMeshPair::to_json() const {
           {"Q", exact_matrix(target)},
           {"triangles", triangle_list},
           {"note", "P, Q: one vertex (x, y) per row; triangles: 0-based vertex indices, counter-clockwise"}};
+}
+
+RationalMeshPair one_triangle(const Eigen::Matrix<Rational, 2, 3>& target) {
+  RationalMeshPair triangle;
+  triangle.P.resize(2, 3);
+  triangle.P << 0, 1, 0, 0, 0, 1;
+  triangle.Q = target;
+  triangle.triangles = Eigen::Matrix3Xi(3, 1);
+  triangle.triangles << 0, 1, 2;
+  return triangle;
 }
 
 Mat2Q random_matrix(Rng& rng, int range, int den, bool positive) {
@@ -55,7 +71,8 @@ RationalMeshPair random_rational_pair(Rng& rng, int cols, int rows) {
     bool valid = true;
     for (Eigen::Index i = 0; i < mesh.triangles.cols() && valid; ++i) {
       const auto p = mesh.corners(mesh.P, i);
-      const Mat2Q edges = (Mat2Q() << p(0, 1) - p(0, 0), p(0, 2) - p(0, 0), p(1, 1) - p(1, 0), p(1, 2) - p(1, 0)).finished();
+      const Mat2Q edges =
+          (Mat2Q() << p(0, 1) - p(0, 0), p(0, 2) - p(0, 0), p(1, 1) - p(1, 0), p(1, 2) - p(1, 0)).finished();
       valid = edges.determinant() > 0 && mesh.linear_part(i).determinant() > 0;
     }
     if (valid) return mesh;
@@ -70,10 +87,18 @@ ExactQuadratic assemble(const RationalMeshPair& mesh, global::Energy energy, con
     const global::LinearPartOperator<Rational> D = global::linear_part_operator(reference);
     global::TriangleQuadratic<Rational> q;
     switch (energy) {
-      case global::Energy::frobenius: q = global::frobenius_quadratic(D, Ai); break;
-      case global::Energy::similarity: q = global::similarity_quadratic(D, Ai); break;
-      case global::Energy::blend: q = global::blend_quadratic(D, Ai, w); break;
-      case global::Energy::procrustes: q = global::procrustes_quadratic(reference, Ai); break;
+      case global::Energy::frobenius:
+        q = global::frobenius_quadratic(D, Ai);
+        break;
+      case global::Energy::similarity:
+        q = global::similarity_quadratic(D, Ai);
+        break;
+      case global::Energy::blend:
+        q = global::blend_quadratic(D, Ai, w);
+        break;
+      case global::Energy::procrustes:
+        q = global::procrustes_quadratic(reference, Ai);
+        break;
     }
     for (int a = 0; a < 3; ++a)
       for (int r = 0; r < 2; ++r) {

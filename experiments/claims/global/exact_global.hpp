@@ -26,8 +26,14 @@ struct RationalMeshPair {
   global::Corners<Rational> corners(const Eigen::Matrix<Rational, 2, Eigen::Dynamic>& V, Eigen::Index i) const;
   /// A_i: the linear part of eq. (1) from source to target triangle i.
   Mat2Q linear_part(Eigen::Index i) const;
+  /// A_i of every triangle, in order.
+  std::vector<Mat2Q> linear_parts() const;
   nlohmann::json to_json() const;
 };
+
+/// One triangle, the unit right triangle (0, 0), (1, 0), (0, 1), mapped onto `target` (one vertex per column):
+/// the smallest counterexample of the global claims.
+RationalMeshPair one_triangle(const Eigen::Matrix<Rational, 2, 3>& target);
 
 /// A cols × rows strip of unit squares (two triangles each) jittered by multiples of 1/8, and a target
 /// moved by a random rational linear map with entries in eighths plus jitter; no triangle degenerate or

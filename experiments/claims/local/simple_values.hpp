@@ -1,7 +1,8 @@
 #pragma once
-// Grids of exact values for sweeps, and the simplicity order used to shrink counterexamples: a rational
-// p/q is simpler the smaller max(|p|, q).
+// Grids of exact values for sweeps, the simplicity order used to shrink counterexamples (a rational p/q is
+// simpler the smaller max(|p|, q)), and the exact 2×2 matrices the local claims are built from.
 #include "theory/exact/rational.hpp"
+#include "theory/local/matrix2.hpp"
 
 #include <vector>
 
@@ -29,6 +30,20 @@ Mat rational_rotation(const Rational& u) {
   Mat R;
   R << c, -s, s, c;
   return R;
+}
+
+/// D = diag(x, y).
+inline affinterp::local::Mat2<Rational> diagonal(const Rational& x, const Rational& y) {
+  affinterp::local::Mat2<Rational> D;
+  D << x, 0, 0, y;
+  return D;
+}
+
+/// S = [[x, h], [h, y]].
+inline affinterp::local::Mat2<Rational> symmetric(const Rational& x, const Rational& y, const Rational& h) {
+  affinterp::local::Mat2<Rational> S;
+  S << x, h, h, y;
+  return S;
 }
 
 }  // namespace affinterp::claims::local

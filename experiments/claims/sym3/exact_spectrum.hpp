@@ -14,6 +14,9 @@ using exact::Mat3Q;
 using exact::Rational;
 using Vec3Q = Eigen::Matrix<Rational, 3, 1>;
 
+/// Resolution of the 100-digit comparisons: deviations below this are rounding, above it a failure.
+inline constexpr const char* kResolution = "1e-80";
+
 /// The Cayley transform (I − K)(I + K)⁻¹ of the skew matrix K with axial vector k (K v = k × v):
 /// exact, orthogonal, det +1.
 Mat3Q cayley(const Vec3Q& k);

@@ -1,0 +1,53 @@
+#include "experiments/claims/claim.hpp"
+#include "experiments/claims/values.hpp"
+#include "theory/exact/rational.hpp"
+#include "theory/local/goodness.hpp"
+#include "theory/local/local.hpp"
+
+#include <algorithm>
+
+namespace affinterp::claims::local {
+namespace {
+
+Outcome check(const ClaimContext& ctx);
+
+const ClaimDeclaration claim{{
+    .id = "kaji.linear.collapse",
+    .chapter = Chapter::local,
+    .where = "Kaji §3",
+    .statement = "For A = −I the linear homotopy (1−t)I + tA is the zero matrix at t = 1/2.",
+    .check = check,
+}};
+
+// Reading: as printed; A = −I lies in GL+(2) (det A = 1), so the example is admissible.
+// Method: exact rational evaluation of A^L(1/2) and of the coefficients of det A^L(t) = det((1−t)I + tA).
+// Sizes: one matrix at either size.
+
+using affinterp::local::blend_determinant;
+using affinterp::local::det2;
+using affinterp::local::Mat2;
+using affinterp::local::Quadratic;
+using exact::Rational;
+
+Outcome check(const ClaimContext&) {
+  const Mat2<Rational> A = -affinterp::local::identity2<Rational>();
+  const Mat2<Rational> half_way = affinterp::local::LinearHomotopy<Rational>{A}(Rational(1) / 2);
+  const bool collapses =
+      std::all_of(half_way.reshaped().begin(), half_way.reshaped().end(), [](const Rational& a) { return a == 0; });
+  const Quadratic<Rational> det = blend_determinant(A);
+  Outcome outcome;
+  outcome.evidence.method = "exact rational evaluation";
+  outcome.evidence.sample_size = 1;
+  outcome.evidence.details = {{"A", exact_matrix(A)},
+                              {"det A", exact::to_string(det2(A))},
+                              {"A^L(1/2)", exact_matrix(half_way)},
+                              {"det A^L(t) coefficients [c0, c1, c2]",
+                               {exact::to_string(det.c0), exact::to_string(det.c1), exact::to_string(det.c2)}}};
+  outcome.verdict = collapses && det2(A) > 0 ? Verdict::confirmed : Verdict::refuted;
+  outcome.summary = collapses ? "A = -I is in GL+(2) (det 1) and A^L(1/2) = 0 exactly; det A^L(t) = (1 - 2t)^2"
+                              : "A^L(1/2) is not 0 for A = -I";
+  return outcome;
+}
+
+}  // namespace
+}  // namespace affinterp::claims::local

@@ -1,0 +1,127 @@
+#include "experiments/claims/claim.hpp"
+#include "plots/local/figures.hpp"
+#include "theory/local/affine_map.hpp"
+#include "theory/local/goodness.hpp"
+#include "theory/local/quadratic_field.hpp"
+#include "theory/local/svd_norm_sampling.hpp"
+
+#include <numbers>
+
+namespace affinterp::claims::local {
+namespace {
+
+Outcome check(const ClaimContext& ctx);
+
+const ClaimDeclaration claim{{
+    .id = "thesis.ex-2.2.4",
+    .chapter = Chapter::local,
+    .where = "thesis §2.2.4",
+    .statement = "The worked example's A, its SVD R_{π/3} diag(2,1) R_{−5π/3} and polar form R_{−4π/3} S are correct; "
+                 "linear interpolation is good for neither area nor norm, SVD for area, polar for both.",
+    .check = check,
+}};
+
+// Reading: the printed angles lie outside the stated ranges (β = −5π/3 outside [0, 2π), the polar angle −4π/3
+//   outside Kaji's (−π, π]); the matrices are what is claimed, and the evidence notes the angles.
+// Method: everything exact in ℚ(√3), where cos and sin of multiples of π/3 lie: eq. (1) for the triangle pair, the
+//   printed SVD and polar decomposition, and the four goodness statements by the exact deciders of Defs 2.2.1 and
+//   2.2.2. Draws thesis Figs 2.2–2.5.
+// Sizes: one example at either size.
+
+using affinterp::local::det2;
+using affinterp::local::exactly_equal;
+using affinterp::local::good_for_area;
+using affinterp::local::good_for_norm;
+using affinterp::local::Mat2;
+using affinterp::local::QSqrt3;
+using exact::Rational;
+
+QSqrt3 q(Rational a, Rational b = 0) { return QSqrt3(std::move(a), std::move(b)); }
+
+/// R_{kπ/3} exactly.
+Mat2<QSqrt3> rotation_pi_thirds(int k) {
+  static const QSqrt3 cosines[6] = {q(1),  q(Rational(1) / 2),  q(Rational(-1) / 2),
+                                    q(-1), q(Rational(-1) / 2), q(Rational(1) / 2)};
+  static const QSqrt3 sines[6] = {q(0), q(0, Rational(1) / 2),  q(0, Rational(1) / 2),
+                                  q(0), q(0, Rational(-1) / 2), q(0, Rational(-1) / 2)};
+  const int i = ((k % 6) + 6) % 6;
+  Mat2<QSqrt3> R;
+  R << cosines[i], -sines[i], sines[i], cosines[i];
+  return R;
+}
+
+Mat2<QSqrt3> product(const Mat2<QSqrt3>& a, const Mat2<QSqrt3>& b) { return a.lazyProduct(b); }
+
+nlohmann::json surd_matrix(const Mat2<QSqrt3>& M) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (int i = 0; i < 2; ++i) rows.push_back({to_string(M(i, 0)), to_string(M(i, 1))});
+  return rows;
+}
+
+Outcome check(const ClaimContext& ctx) {
+  affinterp::local::Triangle<QSqrt3> P, Q;
+  P << q(0), q(0), q(2), q(0), q(3), q(0);  // p1 = (0,0), p2 = (0,3), p3 = (2,0)
+  Q << q(0), q(0, Rational(-9) / 4), q(Rational(-1) / 2), q(0), q(Rational(-15) / 4), q(0, Rational(3) / 2);
+  Mat2<QSqrt3> A_printed, D, S_printed;
+  A_printed << q(Rational(-1) / 4), q(0, Rational(-3) / 4), q(0, Rational(3) / 4), q(Rational(-5) / 4);
+  D << q(2), q(0), q(0), q(1);
+  S_printed << q(Rational(5) / 4), q(0, Rational(-1) / 4), q(0, Rational(-1) / 4), q(Rational(7) / 4);
+
+  const auto map = affinterp::local::affine_map(P, Q);
+  const bool A_right =
+      exactly_equal(map.A, A_printed) && exactly_equal(map.d, affinterp::local::Vec2<QSqrt3>(q(0), q(0)));
+  const bool svd_right = exactly_equal(product(product(rotation_pi_thirds(1), D), rotation_pi_thirds(-5)),
+                                       A_printed);  // R_{π/3} D R_{−5π/3}
+  const bool polar_right = exactly_equal(product(rotation_pi_thirds(-4), S_printed), A_printed) &&
+                           S_printed(0, 0) > q(0) && det2(S_printed) > q(0);
+  // Kaji's Appendix: S = R_{−β} D R_β with β = −5π/3.
+  const bool appendix_consistent =
+      exactly_equal(product(product(rotation_pi_thirds(5), D), rotation_pi_thirds(-5)), S_printed);
+
+  const bool linear_area = good_for_area(A_printed), linear_norm = good_for_norm(A_printed);
+  const bool svd_area = good_for_area(D), polar_area = good_for_area(S_printed), polar_norm = good_for_norm(S_printed);
+  // Not stated in the thesis: the SVD interpolation's norm behaviour, with the printed β and its principal value.
+  const bool svd_norm_printed_beta =
+      !affinterp::local::svd_norm_failure(2, 1, -5 * std::numbers::pi / 3, {}).has_value();
+  const bool svd_norm_principal_beta = !affinterp::local::svd_norm_failure(2, 1, std::numbers::pi / 3, {}).has_value();
+
+  const bool statements_hold = !linear_area && !linear_norm && svd_area && polar_area && polar_norm;
+  Outcome outcome;
+  outcome.evidence.method = "exact arithmetic in Q(sqrt 3); goodness by the exact deciders of Defs 2.2.1/2.2.2";
+  outcome.evidence.sample_size = 1;
+  outcome.evidence.details = {
+      {"A_from_eq1", surd_matrix(map.A)},
+      {"A_printed_matches_eq1", A_right},
+      {"svd_R(pi/3) diag(2,1) R(-5pi/3) == A", svd_right},
+      {"polar_R(-4pi/3) S == A, S positive definite", polar_right},
+      {"S == R(-beta) D R(beta) (Kaji Appendix)", appendix_consistent},
+      {"linear_good_for_area", linear_area},
+      {"linear_good_for_norm", linear_norm},
+      {"svd_good_for_area", svd_area},
+      {"polar_good_for_area", polar_area},
+      {"polar_good_for_norm", polar_norm},
+      {"svd_good_for_norm (not stated; sampled) with beta = -5pi/3", svd_norm_printed_beta},
+      {"svd_good_for_norm (not stated; sampled) with beta = pi/3", svd_norm_principal_beta},
+      {"angle_conventions",
+       "beta = -5pi/3 lies outside the thesis's own range [0, 2pi) (same matrix as pi/3); the polar angle "
+       "-4pi/3 = alpha + beta lies outside Kaji's branch (-pi, pi] (principal value 2pi/3). The matrices are "
+       "right; the interpolation paths A_s(t), A_p(t) depend on which representative is used."},
+      {"caption_note",
+       "Figure 2.5's caption says det A_s(t) for the linear interpolation; the plotted function is det A_l(t)"}};
+  const bool decompositions_right = A_right && svd_right && polar_right;
+  outcome.verdict = decompositions_right && statements_hold ? Verdict::confirmed : Verdict::refuted;
+  outcome.summary = outcome.verdict == Verdict::confirmed
+                        ? "A, its SVD R_{pi/3} diag(2,1) R_{-5pi/3} and polar form R_{-4pi/3} S are exact in Q(sqrt "
+                          "3); linear is good for "
+                          "neither area nor norm, SVD is good for area, polar for area and norm (printed angles lie "
+                          "outside the stated ranges)"
+                        : "the example's matrices or goodness statements do not all hold";
+  if (ctx.draws_figures()) outcome.figures = ctx.figure_refs(plots::draw_thesis_figures_2_2_to_2_5(ctx.figure_dir));
+  if (outcome.verdict == Verdict::refuted)
+    outcome.counterexample = {
+        {"A", surd_matrix(A_printed)}, {"S", surd_matrix(S_printed)}, {"details", outcome.evidence.details}};
+  return outcome;
+}
+
+}  // namespace
+}  // namespace affinterp::claims::local

@@ -1,0 +1,95 @@
+#include "experiments/claims/claim.hpp"
+#include "experiments/claims/local/condition_sweep.hpp"
+#include "experiments/claims/local/norm_witness.hpp"
+#include "experiments/claims/local/region_figure.hpp"
+#include "experiments/claims/local/simple_values.hpp"
+#include "theory/local/goodness.hpp"
+#include "theory/local/thesis_conditions.hpp"
+
+#include <tuple>
+#include <vector>
+
+namespace affinterp::claims::local {
+namespace {
+
+Outcome check(const ClaimContext& ctx);
+
+const ClaimDeclaration claim{{
+    .id = "thesis.thm-2.2.5",
+    .chapter = Chapter::local,
+    .where = "thesis Thm 2.2.5",
+    .statement = "Polar interpolation with S = [[x, h], [h, y]] is good for norm exactly when (x−1)(y−1) ≥ h² and (x + "
+                 "y ≥ 2 or both x, y in (0, 1]).",
+    .check = check,
+}};
+
+// Reading: "good for norm" (Def 2.2.2) = |A_p(t)v| weakly monotone on [0, 1] for every unit v; R_{tγ} is
+//   orthogonal, so |A_p(t)v| = |((1−t)I + tS)v|.
+// Method: over an (x, y, h) grid with xy > h², the printed condition against the exact decision of Def 2.2.2
+//   (theory/local/goodness.hpp: it fails iff some v has P(v) < 0 < Q(v), certified by Dines' theorem); a
+//   counterexample carries a rational direction where the norm dips. The figure is the slice h = 1/2.
+// Sizes: quick step 1/4; full step 1/16; x, y ∈ (0, 4], h ∈ [−4, 4].
+
+using affinterp::local::good_for_norm;
+using affinterp::local::thm_2_2_5_condition;
+
+Outcome check(const ClaimContext& ctx) {
+  const Rational step = ctx.pick(Rational(1) / 4, Rational(1) / 16);
+  using Case = std::tuple<Rational, Rational, Rational>;  // S = [[x, h], [h, y]]
+  std::vector<Case> cases;
+  for (const Rational& x : grid(step, 4, step))
+    for (const Rational& y : grid(step, 4, step))
+      for (const Rational& h : grid(-4, 4, step))
+        if (x * y > h * h) cases.emplace_back(x, y, h);
+  const auto S_of = [](const Case& c) { return symmetric(std::get<0>(c), std::get<1>(c), std::get<2>(c)); };
+  const auto condition = [](const Case& c) {
+    return thm_2_2_5_condition(std::get<0>(c), std::get<1>(c), std::get<2>(c));
+  };
+  const auto property = [&](const Case& c) { return good_for_norm(S_of(c)); };
+  const auto cost = [](const Case& c) {
+    return height(std::get<0>(c)) + height(std::get<1>(c)) + height(std::get<2>(c));
+  };
+  const auto tally = compare_over(cases, ctx.threads, condition, property, cost);
+
+  Outcome outcome;
+  outcome.evidence.method =
+      "exact rational decision of Def 2.2.2 for A_p(t) vs the printed condition over an (x, y, h) grid";
+  outcome.evidence.sample_size = tally.cases;
+  outcome.evidence.details["reading"] =
+      "'good for norm' (Def 2.2.2) = |A_p(t)v| weakly monotone on [0, 1] for every unit v; |A_p(t)v| = |((1-t)I + "
+      "tS)v| "
+      "(R_{t gamma} is orthogonal). Decided exactly per S: fails iff some v has P(v) < 0 < Q(v), P = S - I, "
+      "Q = (S - I) + (S - I)^2, certified by Dines' theorem (see theory/local/goodness.hpp).";
+  outcome.evidence.details["grid"] = "x, y in (0, 4], h in [-4, 4], xy > h^2, step " + exact::to_string(step);
+  outcome.evidence.details["printed_condition"] = tally.summary();
+  if (tally.disagreements() == 0) {
+    outcome.verdict = Verdict::confirmed;
+    outcome.summary = "the printed condition matches the exact decision on all " + std::to_string(tally.cases) +
+                      " grid cases (it says: both eigenvalues of S >= 1, or both <= 1)";
+  } else {
+    outcome.verdict = Verdict::refuted;
+    outcome.summary = std::to_string(tally.condition_only.count) +
+                      " cases satisfy the printed condition but are not good for norm, " +
+                      std::to_string(tally.property_only.count) + " are good but fail it (of " +
+                      std::to_string(tally.cases) + ")";
+    const Case& c = tally.condition_only.simplest ? *tally.condition_only.simplest : *tally.property_only.simplest;
+    outcome.counterexample = {{"x", exact::to_string(std::get<0>(c))}, {"y", exact::to_string(std::get<1>(c))},
+                              {"h", exact::to_string(std::get<2>(c))}, {"printed_condition", condition(c)},
+                              {"good_for_norm", property(c)},          {"witness", norm_witness(S_of(c))}};
+  }
+  if (ctx.draws_figures()) {
+    std::vector<plots::RegionPoint> points;
+    for (const Case& c : cases)
+      if (std::get<2>(c) == Rational(1) / 2)
+        points.push_back(
+            {static_cast<double>(std::get<0>(c)), static_cast<double>(std::get<1>(c)), condition(c), property(c)});
+    outcome.figures =
+        draw_region_figure(ctx, "thesis-thm-2.2.5-region",
+                           "Thm 2.2.5 (polar interpolation), slice h = 1/2: printed condition vs good for norm", "x",
+                           "y", points, static_cast<double>(step) / 2);
+  }
+  return outcome;
+}
+
+}  // namespace
+}  // namespace affinterp::claims::local

@@ -1,0 +1,134 @@
+#include "experiments/claims/claim.hpp"
+#include "experiments/claims/origin/ginac_values.hpp"
+#include "plots/origin/fig_2_6.hpp"
+#include "theory/origin/energy.hpp"
+#include "theory/origin/equal_energy_locus.hpp"
+#include "theory/origin/printed_section_2_3.hpp"
+#include "theory/origin/symbols.hpp"
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace affinterp::claims {
+namespace {
+
+Outcome check(const ClaimContext& ctx);
+
+const ClaimDeclaration claim{{
+    .id = "thesis.sec-2.3.conic",
+    .chapter = Chapter::origin,
+    .where = "thesis §2.3, Fig 2.6",
+    .statement =
+        "The origins o = (x, y) at which min E1 = min E2(o, o) lie on the conic x² − 4xy + y² + x + y − 1/4 = 0.",
+    .check = check,
+}};
+
+// Reading: min E1 = min E2 with every origin at zero (Def 2.3.1), min E2(o, o) with the common origin o = (x, y)
+//   (Problem 2.3.1), and the locus {o : min E1 = min E2(o, o)}. The chapter introduction's other reading (first
+//   origin at zero, second at o) is computed alongside.
+// Method: exact symbolic minimisation over ℚ(x, y) (GiNaC); the locus is the numerator of min E1 − min E2(o, o),
+//   whose denominator is shown positive on the plane, compared with the printed conic up to a constant factor;
+//   small rational points on either curve witness a difference. Draws thesis Fig 2.6.
+// Sizes: symbolic; the same at either size.
+
+nlohmann::json points_json(const std::vector<std::pair<GiNaC::numeric, GiNaC::numeric>>& points) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& [x, y] : points) list.push_back({{"x", exact_number(x)}, {"y", exact_number(y)}});
+  return list;
+}
+
+/// The first of `points` (on one curve) at which `other` does not vanish.
+std::optional<std::pair<GiNaC::numeric, GiNaC::numeric>> first_off(
+    const std::vector<std::pair<GiNaC::numeric, GiNaC::numeric>>& points, const GiNaC::ex& other) {
+  const origin::Symbols& s = origin::symbols();
+  for (const auto& point : points)
+    if (!other.subs(GiNaC::lst{s.x == point.first, s.y == point.second}).is_zero()) return point;
+  return std::nullopt;
+}
+
+Outcome check(const ClaimContext& ctx) {
+  const origin::Symbols& s = origin::symbols();
+  const origin::OriginStudy& study = origin::thesis_study();
+  const GiNaC::ex min_E1 = study.min_E1.value, min_E2 = study.min_E2_common.value;
+  const GiNaC::lst at_zero{s.x == 0, s.y == 0};
+  const bool E2_at_zero_is_E1 = (min_E2.subs(at_zero) - min_E1).is_zero();
+
+  // The locus: the numerator of min E1 − min E2(o, o), whose denominator never vanishes.
+  const GiNaC::ex difference = (min_E1 - min_E2).normal();
+  const GiNaC::ex P = origin::locus_polynomial(difference);
+  const bool denominator_positive = origin::positive_quadratic(GiNaC::denom(difference));
+  const GiNaC::ex Q = origin::printed::conic();
+  const bool printed_holds = denominator_positive && origin::proportional(P, Q);
+  // What the thesis's own min E2 formula implies (min E1 being min E2 at o = 0 by Def. 2.3.1).
+  const GiNaC::ex printed_formula = origin::printed::min_E2();
+  const GiNaC::ex implied = origin::locus_polynomial(printed_formula.subs(at_zero) - printed_formula);
+
+  // Another reading, from the chapter's introduction: first origin fixed at zero, second origin o.
+  const GiNaC::matrix zero = origin::column(0, 0), o = origin::column(s.x, s.y);
+  const GiNaC::ex E2_zero_o =
+      origin::energy_E2(study.config.A[0], study.config.A[1], origin::intermediate_map(study.config, 0, s.v),
+                        origin::intermediate_map(study.config, 1, s.v), zero, o);
+  const GiNaC::ex P_zero_o = origin::locus_polynomial(min_E1 - origin::minimise(E2_zero_o, s.unknowns).value);
+
+  const auto on_P = origin::small_rational_points(P, 6), on_Q = origin::small_rational_points(Q, 6);
+
+  Outcome out;
+  out.evidence.method =
+      "exact symbolic minimisation over Q(x, y) (GiNaC); locus = numerator of "
+      "min E1 - min E2(o, o) compared with the printed conic up to a constant factor";
+  out.evidence.sample_size = 1;
+  out.evidence.details = {
+      {"reading",
+       "min E1 = min E2 with every origin at zero (Def. 2.3.1); min E2(o, o) with the common origin "
+       "o = (x, y) (Problem 2.3.1); locus {o : min E1 = min E2(o, o)}"},
+      {"min E1", exact_number(min_E1)},
+      {"min E2(0, 0) equals min E1", E2_at_zero_is_E1},
+      {"min E1 - min E2(o, o)", formula(difference)},
+      {"denominator positive on the plane", denominator_positive},
+      {"locus polynomial (computed)", polynomial_formula(P)},
+      {"printed conic", polynomial_formula(Q)},
+      {"locus implied by the printed min E2 formula", polynomial_formula(implied)},
+      {"printed min E2 formula implies the computed locus", origin::proportional(implied, P)},
+      {"locus for the reading o1 = 0, o2 = o (chapter introduction)", polynomial_formula(P_zero_o)},
+      {"printed conic matches the reading o1 = 0, o2 = o", origin::proportional(P_zero_o, Q)},
+      {"rational points on the computed locus", points_json(on_P)},
+      {"rational points on the printed conic", points_json(on_Q)},
+  };
+
+  const bool is_conic = origin::total_degree(P) == 2 && denominator_positive;
+  if (printed_holds) {
+    out.verdict = Verdict::confirmed;
+    out.summary = "the origins with min E1 = min E2(o, o) are exactly the printed conic";
+  } else {
+    out.verdict = is_conic ? Verdict::corrected : Verdict::refuted;
+    out.summary = "the locus min E1 = min E2(o, o) is " + polynomial_formula(P) + " = 0, not the printed " +
+                  polynomial_formula(Q) + " = 0";
+    if (!Q.subs(at_zero).is_zero())
+      out.summary += " (which misses o = (0, 0), where both energies are E1 by definition)";
+    if (is_conic)
+      out.correction = "the origins with min E1 = min E2(o, o) form the conic " + polynomial_formula(P) + " = 0";
+    nlohmann::json ce = {{"A1", exact_matrix(study.config.A[0])},
+                         {"A2", exact_matrix(study.config.A[1])},
+                         {"min E1", exact_number(min_E1)}};
+    if (const auto p = first_off(on_P, Q)) {
+      const GiNaC::lst at{s.x == p->first, s.y == p->second};
+      ce["on the computed locus, off the printed conic"] = {{"x", exact_number(p->first)},
+                                                            {"y", exact_number(p->second)},
+                                                            {"min E2(o, o)", exact_number(min_E2.subs(at))},
+                                                            {"printed conic value", exact_number(Q.subs(at))}};
+    }
+    if (const auto q = first_off(on_Q, P)) {
+      const GiNaC::lst at{s.x == q->first, s.y == q->second};
+      ce["on the printed conic, off the computed locus"] = {{"x", exact_number(q->first)},
+                                                            {"y", exact_number(q->second)},
+                                                            {"min E2(o, o)", exact_number(min_E2.subs(at))}};
+    }
+    out.counterexample = ce;
+  }
+  if (ctx.draws_figures()) out.figures = ctx.figure_refs(plots::draw_fig_2_6(ctx.figure_dir, study.config, P, Q));
+  return out;
+}
+
+}  // namespace
+}  // namespace affinterp::claims
