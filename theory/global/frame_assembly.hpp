@@ -8,8 +8,11 @@
 // assembled once. Otherwise H(t) is refilled for each t in a fixed sparsity pattern whose value slots
 // are precomputed.
 #include "theory/global/constraint_terms.hpp"
+#include "theory/global/frame_quadratic.hpp"
 #include "theory/global/local_error.hpp"
 #include "theory/global/local_paths.hpp"
+#include "theory/global/mesh.hpp"
+#include "theory/global/options.hpp"
 
 #include <Eigen/SparseCore>
 

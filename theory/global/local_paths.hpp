@@ -2,7 +2,7 @@
 // The local homotopies A_i(t) of all triangles (Kaji §3), from the local theory (theory/local), each
 // built from A_i's polar form A = R_θ S with θ on the branch chosen for rotation consistency
 // (rotation_branch.hpp): every homotopy is evaluated from (θ, S), so θ + 2πk changes the path.
-#include "theory/global/interpolation.hpp"
+#include "theory/global/options.hpp"
 #include "theory/local/local.hpp"
 
 #include <Eigen/Core>
