@@ -8,6 +8,7 @@
 #include "theory/global/well_posedness.hpp"
 
 #include <cmath>
+#include <mutex>
 #include <numeric>
 #include <optional>
 #include <string>
@@ -92,8 +93,15 @@ struct Interpolation::Engine {
   std::optional<FrameAssembly> assembly;
   /// H = L real and fixed: factored once, x and y solved as two real columns.
   SparseMinimiser<double> fixed;
-  /// H(t) complex Hermitian: its pattern analysed once, refactorised per frame.
-  mutable SparseMinimiser<std::complex<double>> per_frame;
+  /// H(t) complex Hermitian: its values refilled and refactorised per frame in this workspace, its pattern
+  /// analysed once. The only state a frame changes, hence mutable, and guarded so that the const
+  /// vertices_at is safe to call concurrently.
+  struct PerFrame {
+    std::mutex mutex;
+    FrameAssembly::SparseMatrix H;
+    SparseMinimiser<std::complex<double>> minimiser;
+  };
+  mutable PerFrame per_frame;
 
   Engine(const Mesh& source, const Mesh& target, InterpolationOptions opts, const Eigen::VectorXd& theta)
       : options(std::move(opts)), forward(linear_parts(source, target), options.homotopy, theta) {
@@ -101,14 +109,16 @@ struct Interpolation::Engine {
     auto terms = constraint_terms(options.constraints, source, target, forward);
     require_well_posed(source, terms, !has_frobenius_part(options), "E^" + to_string(options.energy));
     assembly.emplace(source, target, options, forward, reverse ? &*reverse : nullptr, std::move(terms));
-    const auto& H = assembly->matrix_at(options.t_begin);
+    FrameAssembly::SparseMatrix H = assembly->pattern();
+    assembly->matrix_at(options.t_begin, H);
     if (assembly->isotropic()) {
       const Eigen::SparseMatrix<double> L = H.real();
       fixed.analyse(L);
       fixed.factorise(L, assembly->low_rank_columns(), assembly->low_rank_weights());
     } else {
-      per_frame.analyse(H);
-      per_frame.factorise(H, assembly->low_rank_columns(), assembly->low_rank_weights());
+      per_frame.minimiser.analyse(H);
+      per_frame.minimiser.factorise(H, assembly->low_rank_columns(), assembly->low_rank_weights());
+      per_frame.H = std::move(H);
     }
   }
 };
@@ -128,22 +138,26 @@ Interpolation::Interpolation(Interpolation&&) noexcept = default;
 Interpolation& Interpolation::operator=(Interpolation&&) noexcept = default;
 
 Eigen::Matrix2Xd Interpolation::vertices_at(double t) const {
-  const InterpolationOptions& o = engine_->options;
+  const Engine& engine = *engine_;  // const all through, but for the per-frame workspace
+  const InterpolationOptions& o = engine.options;
   if (!(t >= o.t_begin && t <= o.t_end))
     throw std::out_of_range("t = " + std::to_string(t) + " is outside the time range [" + std::to_string(o.t_begin) +
                             ", " + std::to_string(o.t_end) + "]");
-  FrameAssembly& assembly = *engine_->assembly;
-  const Eigen::VectorXcd b = assembly.right_hand_side_at(t);
-  if (assembly.isotropic()) {  // L [x y] = [Re b, Im b]
+  const FrameAssembly& assembly = *engine.assembly;
+  const Eigen::VectorXcd b = assembly.right_hand_side_at(t);  // H z = −ũ/2 (hermitian_form.hpp)
+  if (assembly.isotropic()) {                                  // L [x y] = [Re b, Im b]
     Eigen::MatrixXd xy(b.size(), 2);
     xy << b.real(), b.imag();
-    return engine_->fixed.solve(xy).transpose();
+    return engine.fixed.solve(xy).transpose();
   }
   // H(t) changes with A_i(t): a numeric factorisation per frame
-  engine_->per_frame.factorise(assembly.matrix_at(t), assembly.low_rank_columns(), assembly.low_rank_weights());
-  const Eigen::VectorXcd z = engine_->per_frame.solve(b);
+  Engine::PerFrame& frame = engine.per_frame;
+  const std::lock_guard lock(frame.mutex);
+  assembly.matrix_at(t, frame.H);
+  frame.minimiser.factorise(frame.H, assembly.low_rank_columns(), assembly.low_rank_weights());
+  const Eigen::VectorXcd z = frame.minimiser.solve(b);
   Eigen::Matrix2Xd v(2, z.size());
-  v << z.real().transpose(), z.imag().transpose();
+  v << z.real().transpose(), z.imag().transpose();  // z_k = v_kx + i v_ky
   return v;
 }
 

@@ -30,8 +30,12 @@ class Interpolation {
   Interpolation(Interpolation&&) noexcept;
   Interpolation& operator=(Interpolation&&) noexcept;
 
-  /// v_1(t) … v_n(t), column k = v_k(t). Throws std::out_of_range outside [t_begin, t_end]. When G depends
-  /// on t the factorisation is redone in place: do not call concurrently on one object.
+  /// v_1(t) … v_n(t), column k = v_k(t). Throws std::out_of_range outside [t_begin, t_end], and
+  /// RefusedProblem when G(t) is singular at this t.
+  /// \note const as in the standard library: no visible change, and safe to call from several threads on
+  /// one object. When G depends on t (factored_once() is false) each call refactorises G(t) in one
+  /// workspace that the object keeps for its frames, behind a mutex: concurrent calls on one object take
+  /// turns, so give each thread its own Interpolation to compute frames in parallel.
   Eigen::Matrix2Xd vertices_at(double t) const;
 
   /// The quadratic form minimised at time t (dense; for tests and claims on small meshes).
