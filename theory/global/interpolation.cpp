@@ -3,55 +3,27 @@
 #include "theory/global/constraint_terms.hpp"
 #include "theory/global/frame_assembly.hpp"
 #include "theory/global/local_paths.hpp"
+#include "theory/global/mesh_validation.hpp"
 #include "theory/global/rotation_branch.hpp"
 #include "theory/global/sparse_minimiser.hpp"
 #include "theory/global/well_posedness.hpp"
 
 #include <cmath>
 #include <mutex>
-#include <numeric>
 #include <optional>
 #include <string>
 
 namespace affinterp::global {
 namespace {
 
-void require_compatible(const Mesh& source, const Mesh& target) {
-  if (source.triangle_count() == 0) throw RefusedProblem("the source mesh has no triangles");
-  if (source.vertex_count() != target.vertex_count() || source.triangles != target.triangles)
-    throw RefusedProblem("source and target are not compatibly triangulated (they must share one triangle list)");
-  if (!source.vertices.allFinite() || !target.vertices.allFinite())
-    throw RefusedProblem("a vertex coordinate is not finite");
-  const Eigen::Index n = source.vertex_count();
-  if ((source.triangles.array() < 0).any() || (source.triangles.array() >= n).any())
-    throw RefusedProblem("a triangle refers to a vertex that does not exist");
-  // Every vertex in a triangle, and the triangles in one piece: otherwise the unconstrained vertices or
-  // pieces move freely and the minimiser is not unique.
-  std::vector<Eigen::Index> parent(static_cast<std::size_t>(n));
-  std::iota(parent.begin(), parent.end(), 0);
-  auto root = [&](Eigen::Index k) {
-    while (parent[static_cast<std::size_t>(k)] != k) k = parent[static_cast<std::size_t>(k)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(k)])];
-    return k;
-  };
-  std::vector<bool> used(static_cast<std::size_t>(n), false);
-  for (Eigen::Index i = 0; i < source.triangle_count(); ++i)
-    for (int c = 0; c < 3; ++c) {
-      used[static_cast<std::size_t>(source.triangles(c, i))] = true;
-      parent[static_cast<std::size_t>(root(source.triangles(c, i)))] = root(source.triangles(0, i));
-    }
-  for (Eigen::Index k = 0; k < n; ++k) {
-    if (!used[static_cast<std::size_t>(k)])
-      throw RefusedProblem("vertex " + std::to_string(k) + " belongs to no triangle, so nothing determines its path");
-    if (root(k) != root(0))
-      throw RefusedProblem("the mesh is in more than one connected piece; each piece would need its own constraints");
-  }
-  for (Eigen::Index i = 0; i < source.triangle_count(); ++i) {
-    const double ps = source.doubled_signed_area(i), qs = target.doubled_signed_area(i);
-    if (ps == 0) throw RefusedProblem("source triangle " + std::to_string(i) + " is degenerate (zero area)");
-    if (qs == 0 || (ps > 0) != (qs > 0))
-      throw RefusedProblem("target triangle " + std::to_string(i) +
-                           " is degenerate or flipped relative to the source (det A_i <= 0, so A_i is not in GL+(2))");
-  }
+/// The input of Kaji §2 that the engine needs (mesh_validation.hpp): well formed, one triangle list, one
+/// piece (else the minimiser is not unique), and det A_i > 0 on every triangle.
+void require_valid_meshes(const Mesh& source, const Mesh& target) {
+  check_well_formed(source);
+  check_well_formed(target);
+  check_compatible(source, target);
+  check_connected(source);
+  check_orientation_preserved(source, target);
 }
 
 void require_valid_options(const InterpolationOptions& options, Eigen::Index triangles) {
@@ -124,7 +96,7 @@ struct Interpolation::Engine {
 };
 
 Interpolation::Interpolation(const Mesh& source, const Mesh& target, InterpolationOptions options) {
-  require_compatible(source, target);
+  require_valid_meshes(source, target);
   require_valid_options(options, source.triangle_count());
   const std::vector<Eigen::Matrix2d> A = linear_parts(source, target);
   Eigen::VectorXd theta(static_cast<Eigen::Index>(A.size()));

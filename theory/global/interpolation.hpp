@@ -24,7 +24,8 @@ namespace affinterp::global {
 /// Set up once from (source, target, options); then each frame is one sparse solve.
 class Interpolation {
  public:
-  /// Throws RefusedProblem for incompatible meshes, bad options, or an ill-posed problem.
+  /// Throws RefusedProblem for meshes that are not a valid pair (then an InvalidMesh: mesh_validation.hpp),
+  /// bad options, or an ill-posed problem.
   Interpolation(const Mesh& source, const Mesh& target, InterpolationOptions options);
   ~Interpolation();
   Interpolation(Interpolation&&) noexcept;
