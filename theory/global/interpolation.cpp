@@ -60,6 +60,7 @@ bool has_frobenius_part(const InterpolationOptions& options) {
 
 struct Interpolation::Engine {
   InterpolationOptions options;
+  Eigen::VectorXd theta;  ///< θ_i of each A_i on its chosen branch (rotation_branch.hpp)
   LocalPaths forward;
   std::optional<LocalPaths> reverse;  // the reverse problem Q → P, for E′(t) = E(t) + E^{-1}(1 − t)
   std::optional<FrameAssembly> assembly;
@@ -75,8 +76,8 @@ struct Interpolation::Engine {
   };
   mutable PerFrame per_frame;
 
-  Engine(const Mesh& source, const Mesh& target, InterpolationOptions opts, const Eigen::VectorXd& theta)
-      : options(std::move(opts)), forward(linear_parts(source, target), options.homotopy, theta) {
+  Engine(const Mesh& source, const Mesh& target, InterpolationOptions opts, Eigen::VectorXd angles)
+      : options(std::move(opts)), theta(std::move(angles)), forward(linear_parts(source, target), options.homotopy, theta) {
     if (options.symmetric) reverse.emplace(linear_parts(target, source), options.homotopy, -theta);
     auto terms = constraint_terms(options.constraints, source, target, forward);
     require_well_posed(source, terms, !has_frobenius_part(options), "E^" + to_string(options.energy));
@@ -102,7 +103,7 @@ Interpolation::Interpolation(const Mesh& source, const Mesh& target, Interpolati
   Eigen::VectorXd theta(static_cast<Eigen::Index>(A.size()));
   for (std::size_t i = 0; i < A.size(); ++i) theta[static_cast<Eigen::Index>(i)] = principal_polar_angle(A[i]);
   if (options.rotation_branch == RotationBranch::consistent) theta = consistent_angles(source.triangles, theta);
-  engine_ = std::make_unique<Engine>(source, target, std::move(options), theta);
+  engine_ = std::make_unique<Engine>(source, target, std::move(options), std::move(theta));
 }
 
 Interpolation::~Interpolation() = default;
@@ -135,7 +136,7 @@ Eigen::Matrix2Xd Interpolation::vertices_at(double t) const {
 
 FrameQuadratic Interpolation::quadratic_at(double t) const { return engine_->assembly->dense_quadratic_at(t); }
 bool Interpolation::factored_once() const { return engine_->assembly->isotropic(); }
-const Eigen::VectorXd& Interpolation::rotation_angles() const { return engine_->forward.angles(); }
+const Eigen::VectorXd& Interpolation::rotation_angles() const { return engine_->theta; }
 Eigen::Matrix2d Interpolation::local_map(Eigen::Index i, double t) const { return engine_->forward.at(i, t); }
 const InterpolationOptions& Interpolation::options() const { return engine_->options; }
 
