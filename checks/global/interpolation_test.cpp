@@ -10,6 +10,8 @@
 #include <Eigen/Dense>
 
 #include <numbers>
+#include <thread>
+#include <vector>
 
 namespace affinterp::global {
 namespace {
@@ -109,6 +111,22 @@ TEST(Interpolation, RefusesIllPosedProblems) {
   EXPECT_THROW(Interpolation(P, other, with(Energy::frobenius, two_pins(0, 5))), RefusedProblem);
   EXPECT_THROW(Interpolation(P, Q, with(Energy::frobenius, two_pins(0, 99))), RefusedProblem);
   EXPECT_THROW(Interpolation(P, Q, with(Energy::frobenius, two_pins(0, 5))).vertices_at(1.5), std::out_of_range);
+}
+
+// vertices_at is const: frames computed by several threads at once on one object (E^R, refactorised per
+// frame in the object's workspace) are bit for bit the frames computed one after another.
+TEST(Interpolation, VerticesAtIsSafeToCallConcurrently) {
+  const Mesh P = strip(8, 2), Q = bent(P, 2.0);
+  const Interpolation interpolation(P, Q, with(Energy::similarity, two_pins(0, P.vertex_count() - 1)));
+  ASSERT_FALSE(interpolation.factored_once());
+  constexpr int frames = 8;
+  std::vector<Eigen::Matrix2Xd> alone, together(frames);
+  for (int k = 0; k < frames; ++k) alone.push_back(interpolation.vertices_at(k / (frames - 1.0)));
+  std::vector<std::thread> threads;
+  for (int k = 0; k < frames; ++k)
+    threads.emplace_back([&, k] { together[static_cast<std::size_t>(k)] = interpolation.vertices_at(k / (frames - 1.0)); });
+  for (std::thread& thread : threads) thread.join();
+  for (std::size_t k = 0; k < frames; ++k) EXPECT_TRUE(alone[k] == together[k]) << "frame " << k;
 }
 
 RC_GTEST_PROP(Interpolation, RandomTargetsMatchDenseMinimiser, ()) {

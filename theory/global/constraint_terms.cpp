@@ -1,6 +1,7 @@
 #include "theory/global/constraint_terms.hpp"
 
 #include "theory/global/locus.hpp"
+#include "theory/global/refused_problem.hpp"
 
 #include <cmath>
 #include <string>

@@ -2,12 +2,14 @@
 // The constraint function C of Kaji §4 as a sum of terms c ‖ℓ(v) − r(t)‖² with ℓ(v) = Σ_k α_k v_k a linear
 // combination of vertices: a vertex locus or pinned vertex (ℓ = v_k), an edge direction (ℓ = v_i − v_j)
 // or the barycentre (ℓ = Σ v_k / n). Every term is isotropic: it treats x and y alike.
-#include "theory/global/interpolation.hpp"
 #include "theory/global/local_paths.hpp"
+#include "theory/global/mesh.hpp"
+#include "theory/global/options.hpp"
 
 #include <Eigen/Core>
 
 #include <functional>
+#include <string>
 #include <utility>
 #include <vector>
 

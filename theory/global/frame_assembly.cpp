@@ -79,14 +79,14 @@ void FrameAssembly::build_pattern() {
     if (!term.dense())
       for (const auto& [k, alpha_k] : term.coefficients)
         for (const auto& [l, alpha_l] : term.coefficients) lower(k, l);
-  matrix_.resize(n_, n_);
-  matrix_.setFromTriplets(entries.begin(), entries.end());
-  matrix_.makeCompressed();
+  pattern_.resize(n_, n_);
+  pattern_.setFromTriplets(entries.begin(), entries.end());
+  pattern_.makeCompressed();
 
   auto slot = [&](Eigen::Index row, Eigen::Index col) -> int {
-    const int* begin = matrix_.innerIndexPtr() + matrix_.outerIndexPtr()[col];
-    const int* end = matrix_.innerIndexPtr() + matrix_.outerIndexPtr()[col + 1];
-    return static_cast<int>(std::lower_bound(begin, end, static_cast<int>(row)) - matrix_.innerIndexPtr());
+    const int* begin = pattern_.innerIndexPtr() + pattern_.outerIndexPtr()[col];
+    const int* end = pattern_.innerIndexPtr() + pattern_.outerIndexPtr()[col + 1];
+    return static_cast<int>(std::lower_bound(begin, end, static_cast<int>(row)) - pattern_.innerIndexPtr());
   };
   triangle_slots_.assign(9 * forward_terms_.size(), -1);
   for (std::size_t i = 0; i < forward_terms_.size(); ++i)
@@ -95,7 +95,7 @@ void FrameAssembly::build_pattern() {
         if (const Eigen::Index row = forward_terms_[i].vertex[a], col = forward_terms_[i].vertex[b]; row >= col)
           triangle_slots_[9 * i + 3 * a + b] = slot(row, col);
 
-  constant_values_.assign(static_cast<std::size_t>(matrix_.nonZeros()), 0.0);
+  constant_values_.assign(static_cast<std::size_t>(pattern_.nonZeros()), 0.0);
   for (const ConstraintTerm& term : constraints_)
     if (!term.dense())
       for (const auto& [k, alpha_k] : term.coefficients)
@@ -125,23 +125,21 @@ void FrameAssembly::build_pattern() {
   c_ = Eigen::Map<const Eigen::VectorXd>(weights.data(), static_cast<Eigen::Index>(weights.size()));
 }
 
-const FrameAssembly::SparseMatrix& FrameAssembly::matrix_at(double t) {
-  if (isotropic_ && assembled_once_) return matrix_;  // H = L does not involve A_i(t)
-  std::complex<double>* values = matrix_.valuePtr();
-  for (Eigen::Index s = 0; s < matrix_.nonZeros(); ++s) values[s] = constant_values_[static_cast<std::size_t>(s)];
+void FrameAssembly::matrix_at(double t, SparseMatrix& H) const {
+  eigen_assert(H.nonZeros() == pattern_.nonZeros() && "H must have the structure of pattern()");
+  std::complex<double>* values = H.valuePtr();
+  for (Eigen::Index s = 0; s < H.nonZeros(); ++s) values[s] = constant_values_[static_cast<std::size_t>(s)];
   auto add = [&](const TriangleTerm& term, const Eigen::Matrix2d& A, const int* slots) {
-    const Eigen::Matrix3cd H = hermitian_local_error(energy_, term.D, term.corners, A, term.frobenius_share).H * term.weight;
+    const Eigen::Matrix3cd H_i = hermitian_local_error(energy_, term.D, term.corners, A, term.frobenius_share).H * term.weight;
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b)
-        if (const int s = slots[3 * a + b]; s >= 0) values[s] += H(a, b);
+        if (const int s = slots[3 * a + b]; s >= 0) values[s] += H_i(a, b);
   };
   for (std::size_t i = 0; i < forward_terms_.size(); ++i) {
     const int* slots = triangle_slots_.data() + 9 * i;
     add(forward_terms_[i], forward_.at(static_cast<Eigen::Index>(i), t), slots);
     if (reverse_) add(reverse_terms_[i], reverse_->at(static_cast<Eigen::Index>(i), 1 - t), slots);  // E^{-1}(1 − t)
   }
-  assembled_once_ = true;
-  return matrix_;
 }
 
 Eigen::VectorXcd FrameAssembly::right_hand_side_at(double t) const {

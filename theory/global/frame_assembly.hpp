@@ -6,10 +6,13 @@
 //
 // When every triangle's error is E^F, H = L is real and does not involve A_i(t) (G = L ⊗ I₂): it is
 // assembled once. Otherwise H(t) is refilled for each t in a fixed sparsity pattern whose value slots
-// are precomputed.
+// are precomputed. The assembly does not change after construction: the caller owns the matrix it fills.
 #include "theory/global/constraint_terms.hpp"
+#include "theory/global/frame_quadratic.hpp"
 #include "theory/global/local_error.hpp"
 #include "theory/global/local_paths.hpp"
+#include "theory/global/mesh.hpp"
+#include "theory/global/options.hpp"
 
 #include <Eigen/SparseCore>
 
@@ -38,8 +41,12 @@ class FrameAssembly {
 
   /// H is real and the same for every t (no triangle carries an E^R or E^S part).
   bool isotropic() const { return isotropic_; }
-  /// The lower triangle of H(t), plus `grounding` on the diagonal of vertex 0 (see low_rank_columns).
-  const SparseMatrix& matrix_at(double t);
+  /// H's sparsity pattern, lower triangle: the vertex pairs of every triangle and sparse constraint term.
+  /// The matrix that matrix_at fills is a copy of it.
+  const SparseMatrix& pattern() const { return pattern_; }
+  /// Writes the lower triangle of H(t), plus `grounding` on the diagonal of vertex 0 (see low_rank_columns),
+  /// into the values of `H`, which has the structure of pattern(): one matrix serves every frame.
+  void matrix_at(double t, SparseMatrix& H) const;
   /// −ũ(t)/2, so that H z = −ũ/2 at the minimiser.
   Eigen::VectorXcd right_hand_side_at(double t) const;
   /// The dense constraint terms (the barycentre) as U diag(c) Uᵀ, minus the grounding added to matrix_at.
@@ -60,12 +67,11 @@ class FrameAssembly {
   const LocalPaths* reverse_;
   std::vector<TriangleTerm> forward_terms_, reverse_terms_;
   std::vector<ConstraintTerm> constraints_;
-  SparseMatrix matrix_;
-  std::vector<int> triangle_slots_;      ///< per triangle, 9 slots into matrix_'s values (−1: upper half)
+  SparseMatrix pattern_;
+  std::vector<int> triangle_slots_;      ///< per triangle, 9 slots into pattern_'s values (−1: upper half)
   std::vector<double> constant_values_;  ///< the constraint terms and the grounding (real)
   Eigen::MatrixXd U_;
   Eigen::VectorXd c_;
-  bool assembled_once_ = false;
 };
 
 }  // namespace affinterp::global

@@ -9,7 +9,7 @@
 //     blend: w E^F + (1 − w) E^R.
 // E^R (E^S) is the squared distance of B from the complex line {λA : λ ∈ C} (of Y from {λX}): it removes
 // one complex dimension, the rank-2 real projection behind kaji.er.positive-definite.
-#include "theory/global/interpolation.hpp"
+#include "theory/global/options.hpp"
 
 #include <Eigen/Core>
 

@@ -3,54 +3,27 @@
 #include "theory/global/constraint_terms.hpp"
 #include "theory/global/frame_assembly.hpp"
 #include "theory/global/local_paths.hpp"
+#include "theory/global/mesh_validation.hpp"
 #include "theory/global/rotation_branch.hpp"
 #include "theory/global/sparse_minimiser.hpp"
 #include "theory/global/well_posedness.hpp"
 
 #include <cmath>
-#include <numeric>
+#include <mutex>
 #include <optional>
 #include <string>
 
 namespace affinterp::global {
 namespace {
 
-void require_compatible(const Mesh& source, const Mesh& target) {
-  if (source.triangle_count() == 0) throw RefusedProblem("the source mesh has no triangles");
-  if (source.vertex_count() != target.vertex_count() || source.triangles != target.triangles)
-    throw RefusedProblem("source and target are not compatibly triangulated (they must share one triangle list)");
-  if (!source.vertices.allFinite() || !target.vertices.allFinite())
-    throw RefusedProblem("a vertex coordinate is not finite");
-  const Eigen::Index n = source.vertex_count();
-  if ((source.triangles.array() < 0).any() || (source.triangles.array() >= n).any())
-    throw RefusedProblem("a triangle refers to a vertex that does not exist");
-  // Every vertex in a triangle, and the triangles in one piece: otherwise the unconstrained vertices or
-  // pieces move freely and the minimiser is not unique.
-  std::vector<Eigen::Index> parent(static_cast<std::size_t>(n));
-  std::iota(parent.begin(), parent.end(), 0);
-  auto root = [&](Eigen::Index k) {
-    while (parent[static_cast<std::size_t>(k)] != k) k = parent[static_cast<std::size_t>(k)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(k)])];
-    return k;
-  };
-  std::vector<bool> used(static_cast<std::size_t>(n), false);
-  for (Eigen::Index i = 0; i < source.triangle_count(); ++i)
-    for (int c = 0; c < 3; ++c) {
-      used[static_cast<std::size_t>(source.triangles(c, i))] = true;
-      parent[static_cast<std::size_t>(root(source.triangles(c, i)))] = root(source.triangles(0, i));
-    }
-  for (Eigen::Index k = 0; k < n; ++k) {
-    if (!used[static_cast<std::size_t>(k)])
-      throw RefusedProblem("vertex " + std::to_string(k) + " belongs to no triangle, so nothing determines its path");
-    if (root(k) != root(0))
-      throw RefusedProblem("the mesh is in more than one connected piece; each piece would need its own constraints");
-  }
-  for (Eigen::Index i = 0; i < source.triangle_count(); ++i) {
-    const double ps = source.doubled_signed_area(i), qs = target.doubled_signed_area(i);
-    if (ps == 0) throw RefusedProblem("source triangle " + std::to_string(i) + " is degenerate (zero area)");
-    if (qs == 0 || (ps > 0) != (qs > 0))
-      throw RefusedProblem("target triangle " + std::to_string(i) +
-                           " is degenerate or flipped relative to the source (det A_i <= 0, so A_i is not in GL+(2))");
-  }
+/// The input of Kaji §2 that the engine needs (mesh_validation.hpp): well formed, one triangle list, one
+/// piece (else the minimiser is not unique), and det A_i > 0 on every triangle.
+void require_valid_meshes(const Mesh& source, const Mesh& target) {
+  check_well_formed(source);
+  check_well_formed(target);
+  check_compatible(source, target);
+  check_connected(source);
+  check_orientation_preserved(source, target);
 }
 
 void require_valid_options(const InterpolationOptions& options, Eigen::Index triangles) {
@@ -87,40 +60,50 @@ bool has_frobenius_part(const InterpolationOptions& options) {
 
 struct Interpolation::Engine {
   InterpolationOptions options;
+  Eigen::VectorXd theta;  ///< θ_i of each A_i on its chosen branch (rotation_branch.hpp)
   LocalPaths forward;
   std::optional<LocalPaths> reverse;  // the reverse problem Q → P, for E′(t) = E(t) + E^{-1}(1 − t)
   std::optional<FrameAssembly> assembly;
   /// H = L real and fixed: factored once, x and y solved as two real columns.
   SparseMinimiser<double> fixed;
-  /// H(t) complex Hermitian: its pattern analysed once, refactorised per frame.
-  mutable SparseMinimiser<std::complex<double>> per_frame;
+  /// H(t) complex Hermitian: its values refilled and refactorised per frame in this workspace, its pattern
+  /// analysed once. The only state a frame changes, hence mutable, and guarded so that the const
+  /// vertices_at is safe to call concurrently.
+  struct PerFrame {
+    std::mutex mutex;
+    FrameAssembly::SparseMatrix H;
+    SparseMinimiser<std::complex<double>> minimiser;
+  };
+  mutable PerFrame per_frame;
 
-  Engine(const Mesh& source, const Mesh& target, InterpolationOptions opts, const Eigen::VectorXd& theta)
-      : options(std::move(opts)), forward(linear_parts(source, target), options.homotopy, theta) {
+  Engine(const Mesh& source, const Mesh& target, InterpolationOptions opts, Eigen::VectorXd angles)
+      : options(std::move(opts)), theta(std::move(angles)), forward(linear_parts(source, target), options.homotopy, theta) {
     if (options.symmetric) reverse.emplace(linear_parts(target, source), options.homotopy, -theta);
     auto terms = constraint_terms(options.constraints, source, target, forward);
     require_well_posed(source, terms, !has_frobenius_part(options), "E^" + to_string(options.energy));
     assembly.emplace(source, target, options, forward, reverse ? &*reverse : nullptr, std::move(terms));
-    const auto& H = assembly->matrix_at(options.t_begin);
+    FrameAssembly::SparseMatrix H = assembly->pattern();
+    assembly->matrix_at(options.t_begin, H);
     if (assembly->isotropic()) {
       const Eigen::SparseMatrix<double> L = H.real();
       fixed.analyse(L);
       fixed.factorise(L, assembly->low_rank_columns(), assembly->low_rank_weights());
     } else {
-      per_frame.analyse(H);
-      per_frame.factorise(H, assembly->low_rank_columns(), assembly->low_rank_weights());
+      per_frame.minimiser.analyse(H);
+      per_frame.minimiser.factorise(H, assembly->low_rank_columns(), assembly->low_rank_weights());
+      per_frame.H = std::move(H);
     }
   }
 };
 
 Interpolation::Interpolation(const Mesh& source, const Mesh& target, InterpolationOptions options) {
-  require_compatible(source, target);
+  require_valid_meshes(source, target);
   require_valid_options(options, source.triangle_count());
   const std::vector<Eigen::Matrix2d> A = linear_parts(source, target);
   Eigen::VectorXd theta(static_cast<Eigen::Index>(A.size()));
   for (std::size_t i = 0; i < A.size(); ++i) theta[static_cast<Eigen::Index>(i)] = principal_polar_angle(A[i]);
   if (options.rotation_branch == RotationBranch::consistent) theta = consistent_angles(source.triangles, theta);
-  engine_ = std::make_unique<Engine>(source, target, std::move(options), theta);
+  engine_ = std::make_unique<Engine>(source, target, std::move(options), std::move(theta));
 }
 
 Interpolation::~Interpolation() = default;
@@ -128,61 +111,33 @@ Interpolation::Interpolation(Interpolation&&) noexcept = default;
 Interpolation& Interpolation::operator=(Interpolation&&) noexcept = default;
 
 Eigen::Matrix2Xd Interpolation::vertices_at(double t) const {
-  const InterpolationOptions& o = engine_->options;
+  const Engine& engine = *engine_;  // const all through, but for the per-frame workspace
+  const InterpolationOptions& o = engine.options;
   if (!(t >= o.t_begin && t <= o.t_end))
     throw std::out_of_range("t = " + std::to_string(t) + " is outside the time range [" + std::to_string(o.t_begin) +
                             ", " + std::to_string(o.t_end) + "]");
-  FrameAssembly& assembly = *engine_->assembly;
-  const Eigen::VectorXcd b = assembly.right_hand_side_at(t);
-  if (assembly.isotropic()) {  // L [x y] = [Re b, Im b]
+  const FrameAssembly& assembly = *engine.assembly;
+  const Eigen::VectorXcd b = assembly.right_hand_side_at(t);  // H z = −ũ/2 (hermitian_form.hpp)
+  if (assembly.isotropic()) {                                  // L [x y] = [Re b, Im b]
     Eigen::MatrixXd xy(b.size(), 2);
     xy << b.real(), b.imag();
-    return engine_->fixed.solve(xy).transpose();
+    return engine.fixed.solve(xy).transpose();
   }
   // H(t) changes with A_i(t): a numeric factorisation per frame
-  engine_->per_frame.factorise(assembly.matrix_at(t), assembly.low_rank_columns(), assembly.low_rank_weights());
-  const Eigen::VectorXcd z = engine_->per_frame.solve(b);
+  Engine::PerFrame& frame = engine.per_frame;
+  const std::lock_guard lock(frame.mutex);
+  assembly.matrix_at(t, frame.H);
+  frame.minimiser.factorise(frame.H, assembly.low_rank_columns(), assembly.low_rank_weights());
+  const Eigen::VectorXcd z = frame.minimiser.solve(b);
   Eigen::Matrix2Xd v(2, z.size());
-  v << z.real().transpose(), z.imag().transpose();
+  v << z.real().transpose(), z.imag().transpose();  // z_k = v_kx + i v_ky
   return v;
 }
 
 FrameQuadratic Interpolation::quadratic_at(double t) const { return engine_->assembly->dense_quadratic_at(t); }
 bool Interpolation::factored_once() const { return engine_->assembly->isotropic(); }
-const Eigen::VectorXd& Interpolation::rotation_angles() const { return engine_->forward.angles(); }
+const Eigen::VectorXd& Interpolation::rotation_angles() const { return engine_->theta; }
 Eigen::Matrix2d Interpolation::local_map(Eigen::Index i, double t) const { return engine_->forward.at(i, t); }
 const InterpolationOptions& Interpolation::options() const { return engine_->options; }
-
-std::string to_string(LocalHomotopy homotopy) {
-  switch (homotopy) {
-    case LocalHomotopy::exp: return "exp";
-    case LocalHomotopy::polar: return "polar";
-    case LocalHomotopy::linear: return "linear";
-    case LocalHomotopy::svd: return "svd";
-  }
-  return "?";
-}
-
-std::string to_string(Energy energy) {
-  switch (energy) {
-    case Energy::frobenius: return "F";
-    case Energy::procrustes: return "S";
-    case Energy::similarity: return "R";
-    case Energy::blend: return "blend";
-  }
-  return "?";
-}
-
-LocalHomotopy parse_local_homotopy(const std::string& name) {
-  for (auto h : {LocalHomotopy::exp, LocalHomotopy::polar, LocalHomotopy::linear, LocalHomotopy::svd})
-    if (to_string(h) == name) return h;
-  throw std::invalid_argument("unknown local homotopy '" + name + "' (exp, polar, linear, svd)");
-}
-
-Energy parse_energy(const std::string& name) {
-  for (auto e : {Energy::frobenius, Energy::procrustes, Energy::similarity, Energy::blend})
-    if (to_string(e) == name) return e;
-  throw std::invalid_argument("unknown energy '" + name + "' (F, S, R, blend)");
-}
 
 }  // namespace affinterp::global

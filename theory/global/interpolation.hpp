@@ -7,123 +7,36 @@
 // E_t is the quadratic form vᵀ G(t) v + vᵀ u(t) + c (Kaji Appendix, "Efficiency"), minimised by
 // solving 2 G(t) v = −u(t) — as the n × n complex Hermitian system H(t) z = −ũ(t)/2 of hermitian_form.hpp —
 // with a sparse Cholesky factorisation.
+//
+// This facade includes what its callers need: the options (options.hpp), the error (refused_problem.hpp)
+// and the frame's quadratic form (frame_quadratic.hpp). The engine's own headers include those, never this.
+#include "theory/global/frame_quadratic.hpp"
 #include "theory/global/mesh.hpp"
+#include "theory/global/options.hpp"
+#include "theory/global/refused_problem.hpp"
 
 #include <Eigen/Core>
 
 #include <memory>
-#include <optional>
-#include <stdexcept>
-#include <string>
-#include <vector>
 
 namespace affinterp::global {
-
-/// The local homotopy A_i(t) between I and A_i (Kaji §3).
-enum class LocalHomotopy {
-  exp,     ///< A^E(t) = R_θ^t S^t, eq. (3) (Kaji's proposal; the default)
-  polar,   ///< A^P(t) = R_{tθ}((1−t)I + tS)  [ACOL00]
-  linear,  ///< A^L(t) = (1−t)I + tA
-  svd,     ///< R_{tα}((1−t)I + tD)R_{tβ} for A = R_α D R_β
-};
-
-/// The local error function E_i(A_i(t), B_i(t)) (Kaji §4).
-enum class Energy {
-  frobenius,   ///< E^F = ‖A − B‖²_F  [ACOL00]
-  procrustes,  ///< E^S = min_{s,δ} Σ_{k∈τ} ‖s R_δ A p_k − B p_k‖²  [WW95], p_k taken from the triangle's centroid
-  similarity,  ///< E^R = min_{s,δ} ‖s R_δ A − B‖²_F, eq. (4), in the Appendix's closed form
-  blend,       ///< w_i E^F + (1 − w_i) E^R ("Improvements")
-};
-
-/// How the polar angle θ_i of each A_i is chosen among θ_i + 2πk (the rotation consistency problem).
-enum class RotationBranch {
-  principal,   ///< θ_i ∈ (−π, π] independently per triangle (what a plain polar decomposition gives)
-  consistent,  ///< breadth-first over the dual graph from triangle 0: θ_j + 2πk_j within π of its parent's
-};
-
-/// Vertex `vertex` should trace u(t): the interpolating B-spline through `points` at t = 0, 1/(N−1), …, 1
-/// (locus.hpp; two points: the straight segment). Adds c ‖u(t) − v(t)‖² (Kaji §4).
-struct VertexLocus {
-  Eigen::Index vertex = 0;
-  Eigen::Matrix2Xd points;
-  double weight = 1.0;  ///< c_i > 0
-};
-
-/// Vertex `vertex` should move on the straight line (1−t)p_k + t q_k: the [ACOL00] constraint in its
-/// intended form. Adds c ‖(1−t)p_k + t q_k − v_k(t)‖².
-struct PinnedVertex {
-  Eigen::Index vertex = 0;
-  double weight = 1.0;
-};
-
-/// The direction of the edge v_i − v_j should follow e_ij(t). Adds c ‖v_i(t) − v_j(t) − e_ij(t)‖² (Kaji §4).
-struct EdgeDirection {
-  enum class Path {
-    local_homotopy,  ///< e(t) = A_τ(t)(p_i − p_j) for the first triangle τ holding the edge
-    linear,          ///< e(t) = (1−t)(p_i − p_j) + t(q_i − q_j)
-  };
-  Eigen::Index i = 0, j = 0;
-  Path path = Path::local_homotopy;
-  double weight = 1.0;
-};
-
-/// The barycentre Σ v_k / n should trace u_o(t): the B-spline through `points` as for VertexLocus; no
-/// points means the straight line from the source's to the target's barycentre. Adds c_o ‖Σv/n − u_o‖².
-struct BarycentreLocus {
-  Eigen::Matrix2Xd points;
-  double weight = 1.0;
-};
-
-/// The constraint function C (Kaji §4): a sum of the terms above.
-struct Constraints {
-  std::vector<PinnedVertex> pinned;
-  std::vector<VertexLocus> loci;
-  std::vector<EdgeDirection> edges;
-  std::optional<BarycentreLocus> barycentre;
-};
-
-struct InterpolationOptions {
-  LocalHomotopy homotopy = LocalHomotopy::exp;
-  Energy energy = Energy::similarity;
-  RotationBranch rotation_branch = RotationBranch::consistent;
-  /// w_i of the blend, one per triangle; empty means `blend_weight` for every triangle.
-  Eigen::VectorXd blend_weights;
-  double blend_weight = 0.5;
-  /// E_i ← Area(p_{i1}, p_{i2}, p_{i3}) E_i ("Improvements").
-  bool area_weighted = false;
-  /// E′(t) = E(t) + E^{−1}(1 − t): the reverse problem's energy in the same unknowns ("Improvements").
-  bool symmetric = false;
-  Constraints constraints;
-  /// The times vertices_at accepts (loci are parameterised on [0, 1] and extended by their end cubics).
-  double t_begin = 0.0, t_end = 1.0;
-};
-
-/// A problem the engine refuses rather than answer with a degenerate animation: invalid input, a
-/// minimiser that is not unique, or a minimum that is a collapse. what() names what is missing.
-class RefusedProblem : public std::invalid_argument {
- public:
-  using std::invalid_argument::invalid_argument;
-};
-
-/// The quadratic form E(v) = vᵀ G v + vᵀ u + c of one frame, v = (v_1x, v_1y, …, v_nx, v_ny) (Kaji
-/// Appendix), with the constraint terms included.
-struct FrameQuadratic {
-  Eigen::MatrixXd G;  ///< dense: for inspection on small meshes only
-  Eigen::VectorXd u;
-  double c = 0.0;
-};
 
 /// Set up once from (source, target, options); then each frame is one sparse solve.
 class Interpolation {
  public:
-  /// Throws RefusedProblem for incompatible meshes, bad options, or an ill-posed problem.
+  /// Throws RefusedProblem for meshes that are not a valid pair (then an InvalidMesh: mesh_validation.hpp),
+  /// bad options, or an ill-posed problem.
   Interpolation(const Mesh& source, const Mesh& target, InterpolationOptions options);
   ~Interpolation();
   Interpolation(Interpolation&&) noexcept;
   Interpolation& operator=(Interpolation&&) noexcept;
 
-  /// v_1(t) … v_n(t), column k = v_k(t). Throws std::out_of_range outside [t_begin, t_end]. When G depends
-  /// on t the factorisation is redone in place: do not call concurrently on one object.
+  /// v_1(t) … v_n(t), column k = v_k(t). Throws std::out_of_range outside [t_begin, t_end], and
+  /// RefusedProblem when G(t) is singular at this t.
+  /// \note const as in the standard library: no visible change, and safe to call from several threads on
+  /// one object. When G depends on t (factored_once() is false) each call refactorises G(t) in one
+  /// workspace that the object keeps for its frames, behind a mutex: concurrent calls on one object take
+  /// turns, so give each thread its own Interpolation to compute frames in parallel.
   Eigen::Matrix2Xd vertices_at(double t) const;
 
   /// The quadratic form minimised at time t (dense; for tests and claims on small meshes).
@@ -142,12 +55,5 @@ class Interpolation {
   struct Engine;
   std::unique_ptr<Engine> engine_;
 };
-
-std::string to_string(LocalHomotopy homotopy);
-std::string to_string(Energy energy);
-/// Parses the names used by to_string ("exp", "polar", "linear", "svd"; "F", "S", "R", "blend").
-/// Throws std::invalid_argument on anything else.
-LocalHomotopy parse_local_homotopy(const std::string& name);
-Energy parse_energy(const std::string& name);
 
 }  // namespace affinterp::global

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <string>
 
 namespace affinterp::global {
@@ -25,8 +26,7 @@ void check_well_formed(const Mesh& mesh) {
                           str(mesh.vertex_count()));
     }
     const auto& t = mesh.triangles.col(i);
-    if (t(0) == t(1) || t(1) == t(2) || t(0) == t(2))
-      throw InvalidMesh("triangle " + str(i) + " uses a vertex twice");
+    if (t(0) == t(1) || t(1) == t(2) || t(0) == t(2)) throw InvalidMesh("triangle " + str(i) + " uses a vertex twice");
   }
 }
 
@@ -40,6 +40,39 @@ void check_compatible(const Mesh& source, const Mesh& target) {
   for (Eigen::Index i = 0; i < source.triangle_count(); ++i)
     if (source.triangles.col(i) != target.triangles.col(i))
       throw InvalidMesh("triangle " + str(i) + " differs between source and target: the face lists must match");
+}
+
+void check_connected(const Mesh& mesh) {
+  const auto n = static_cast<std::size_t>(mesh.vertex_count());
+  std::vector<std::size_t> parent(n);  // union-find over the vertices, joined by each triangle
+  std::iota(parent.begin(), parent.end(), std::size_t{0});
+  const auto root = [&](std::size_t k) {
+    while (parent[k] != k) k = parent[k] = parent[parent[k]];
+    return k;
+  };
+  std::vector<bool> used(n, false);
+  for (Eigen::Index i = 0; i < mesh.triangle_count(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      const auto k = static_cast<std::size_t>(mesh.triangles(c, i));
+      used[k] = true;
+      parent[root(k)] = root(static_cast<std::size_t>(mesh.triangles(0, i)));
+    }
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!used[k])
+      throw InvalidMesh("vertex " + std::to_string(k) + " belongs to no triangle, so nothing determines its path");
+    if (root(k) != root(0))
+      throw InvalidMesh("the mesh is in more than one connected piece; each piece would need its own constraints");
+  }
+}
+
+void check_orientation_preserved(const Mesh& source, const Mesh& target) {
+  for (Eigen::Index i = 0; i < source.triangle_count(); ++i) {
+    const double ps = source.doubled_signed_area(i), qs = target.doubled_signed_area(i);
+    if (ps == 0) throw InvalidMesh("source triangle " + str(i) + " is degenerate (zero area)");
+    if (qs == 0 || (ps > 0) != (qs > 0))  // det A_i = qs / ps (eq. (1))
+      throw InvalidMesh("target triangle " + str(i) +
+                        " is degenerate or flipped relative to the source (det A_i <= 0, so A_i is not in GL+(2))");
+  }
 }
 
 bool is_degenerate(const Mesh& mesh, Eigen::Index i) {

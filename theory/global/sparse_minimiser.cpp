@@ -1,6 +1,6 @@
 #include "theory/global/sparse_minimiser.hpp"
 
-#include "theory/global/interpolation.hpp"
+#include "theory/global/refused_problem.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,7 @@
 #include "theory/global/well_posedness.hpp"
 
+#include "theory/global/refused_problem.hpp"
+
 #include <Eigen/Eigenvalues>
 
 namespace affinterp::global {

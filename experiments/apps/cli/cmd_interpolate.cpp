@@ -8,6 +8,7 @@
 #include "experiments/inputs/mesh_pair.hpp"
 #include "plots/mesh_animation.hpp"
 #include "plots/mesh_strip.hpp"
+#include "theory/global/gauge.hpp"
 #include "theory/global/interpolation.hpp"
 #include "theory/global/mesh_validation.hpp"
 #include "theory/global/metrics.hpp"
@@ -15,7 +16,6 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <limits>
 #include <optional>
 #include <fstream>
 #include <iomanip>
@@ -87,22 +87,6 @@ global::InterpolationOptions engine_options(const InterpolateOptions& o, const i
   return options;
 }
 
-/// The default for E^S, E^R and blends, which are invariant under rotation and scale (Kaji §4): with no
-/// vertex or edge constraint given, the edge (corners 0, 1) of the source triangle nearest the barycentre
-/// follows its local homotopy, fixing the global rotation and scale as the barycentre fixes translation.
-std::optional<global::EdgeDirection> default_edge_direction(const InterpolateOptions& o, const global::Mesh& source) {
-  if (o.energy == "F" || !o.pins.empty() || !o.loci.empty() || !o.edges.empty()) return std::nullopt;
-  const Eigen::Vector2d barycentre = source.vertices.rowwise().mean();
-  Eigen::Index nearest = 0;
-  double best = std::numeric_limits<double>::infinity();
-  for (Eigen::Index i = 0; i < source.triangle_count(); ++i) {
-    const double d = ((source.corner(i, 0) + source.corner(i, 1) + source.corner(i, 2)) / 3 - barycentre).squaredNorm();
-    if (d < best) best = d, nearest = i;
-  }
-  return global::EdgeDirection{source.triangles(0, nearest), source.triangles(1, nearest),
-                               global::EdgeDirection::Path::local_homotopy, 1.0};
-}
-
 /// A number for JSON: null when not finite (a singular B_i gives σ1/σ2 = +∞).
 nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
 
@@ -137,7 +121,7 @@ void run(const InterpolateOptions& o) {
     std::cerr << "note: " << pair.flipped_target_triangles.size() << " target triangle(s) flipped (allowed)\n";
 
   global::InterpolationOptions options = engine_options(o, pair);
-  const auto default_edge = default_edge_direction(o, pair.source);
+  const auto default_edge = global::default_edge_direction(pair.source, options);
   if (default_edge) options.constraints.edges.push_back(*default_edge);
   std::unique_ptr<global::Interpolation> interpolation;
   try {

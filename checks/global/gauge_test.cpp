@@ -1,0 +1,75 @@
+// The default gauge (theory/global/gauge.hpp): when it adds an edge, which edge, and that the edge is
+// what makes E^R with only a barycentre locus well posed.
+#include "theory/global/gauge.hpp"
+#include "checks/global/strip.hpp"
+#include "theory/global/interpolation.hpp"
+
+#include <gtest/gtest.h>
+
+namespace affinterp::global {
+namespace {
+
+/// Three counter-clockwise triangles (0,1,2), (1,3,2), (1,4,3) on p = (0,0), (1,0), (0,1), (1,1), (3,0).
+/// The vertex barycentre is (1, 0.4); the centroids (1/3, 1/3), (2/3, 2/3), (5/3, 1/3) lie at squared
+/// distances 0.449, 0.182, 0.449 from it, so triangle 1 is nearest and its corners 0, 1 are vertices 1, 3.
+Mesh fan() {
+  Mesh mesh;
+  mesh.vertices.resize(2, 5);
+  mesh.triangles.resize(3, 3);
+  // clang-format off
+  mesh.vertices << 0, 1, 0, 1, 3,
+                   0, 0, 1, 1, 0;
+  mesh.triangles << 0, 1, 1,
+                    1, 3, 4,
+                    2, 2, 3;
+  // clang-format on
+  return mesh;
+}
+
+InterpolationOptions with(Energy energy, Constraints constraints = {}) {
+  InterpolationOptions options;
+  options.energy = energy;
+  options.constraints = std::move(constraints);
+  return options;
+}
+
+TEST(DefaultEdgeDirection, TheEdgeOfTheTriangleNearestTheBarycentre) {
+  for (const Energy energy : {Energy::similarity, Energy::procrustes, Energy::blend}) {
+    const auto edge = default_edge_direction(fan(), with(energy));
+    ASSERT_TRUE(edge) << to_string(energy);
+    EXPECT_EQ(edge->i, 1);
+    EXPECT_EQ(edge->j, 3);
+    EXPECT_EQ(edge->path, EdgeDirection::Path::local_homotopy);
+    EXPECT_EQ(edge->weight, 1.0);
+  }
+  // A tie goes to the first triangle: on the square [0, 3]² cut along its diagonal the centroids (2, 1)
+  // and (1, 2) are both at squared distance ½ from (3/2, 3/2), exactly.
+  Mesh square = testing::unit_square();
+  square.vertices *= 3;
+  const auto first = default_edge_direction(square, with(Energy::similarity));
+  ASSERT_TRUE(first);
+  EXPECT_EQ(first->i, 0);
+  EXPECT_EQ(first->j, 1);
+}
+
+TEST(DefaultEdgeDirection, NoneWhenTheEnergyOrTheConstraintsFixRotationAndScale) {
+  EXPECT_FALSE(default_edge_direction(fan(), with(Energy::frobenius)));
+  EXPECT_FALSE(default_edge_direction(fan(), with(Energy::similarity, {{{0, 1.0}}, {}, {}, {}})));
+  EXPECT_FALSE(
+      default_edge_direction(fan(), with(Energy::similarity, {{}, {{2, Eigen::Matrix2Xd::Zero(2, 2), 1.0}}, {}, {}})));
+  EXPECT_FALSE(default_edge_direction(
+      fan(), with(Energy::similarity, {{}, {}, {{0, 2, EdgeDirection::Path::linear, 1.0}}, {}})));
+  // A barycentre locus fixes translation only: the edge is still added.
+  EXPECT_TRUE(default_edge_direction(fan(), with(Energy::similarity, {{}, {}, {}, BarycentreLocus{}})));
+}
+
+TEST(DefaultEdgeDirection, MakesASimilarityInvariantEnergyWellPosed) {
+  const Mesh P = testing::strip(4, 2), Q = testing::bent(P, 1.0);
+  InterpolationOptions options = with(Energy::similarity, {{}, {}, {}, BarycentreLocus{}});
+  EXPECT_THROW(Interpolation(P, Q, options), RefusedProblem);  // the collapse onto the barycentre's path
+  options.constraints.edges.push_back(*default_edge_direction(P, options));
+  EXPECT_NO_THROW(Interpolation(P, Q, options));
+}
+
+}  // namespace
+}  // namespace affinterp::global

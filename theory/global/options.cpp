@@ -1,0 +1,47 @@
+#include "theory/global/options.hpp"
+
+#include <stdexcept>
+
+namespace affinterp::global {
+
+std::string to_string(LocalHomotopy homotopy) {
+  switch (homotopy) {
+    case LocalHomotopy::exp:
+      return "exp";
+    case LocalHomotopy::polar:
+      return "polar";
+    case LocalHomotopy::linear:
+      return "linear";
+    case LocalHomotopy::svd:
+      return "svd";
+  }
+  return "?";
+}
+
+std::string to_string(Energy energy) {
+  switch (energy) {
+    case Energy::frobenius:
+      return "F";
+    case Energy::procrustes:
+      return "S";
+    case Energy::similarity:
+      return "R";
+    case Energy::blend:
+      return "blend";
+  }
+  return "?";
+}
+
+LocalHomotopy parse_local_homotopy(const std::string& name) {
+  for (auto h : {LocalHomotopy::exp, LocalHomotopy::polar, LocalHomotopy::linear, LocalHomotopy::svd})
+    if (to_string(h) == name) return h;
+  throw std::invalid_argument("unknown local homotopy '" + name + "' (exp, polar, linear, svd)");
+}
+
+Energy parse_energy(const std::string& name) {
+  for (auto e : {Energy::frobenius, Energy::procrustes, Energy::similarity, Energy::blend})
+    if (to_string(e) == name) return e;
+  throw std::invalid_argument("unknown energy '" + name + "' (F, S, R, blend)");
+}
+
+}  // namespace affinterp::global
