@@ -4,7 +4,6 @@
 #include "checks/inputs/shared_meshes.hpp"
 #include "experiments/inputs/mesh_file.hpp"
 #include "experiments/inputs/shapes/catalogue.hpp"
-#include "plots/mesh_animation.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -92,8 +91,11 @@ TEST(InterpolateCli, DrawsAFilmstripAndAnAnimation) {
   expect_frames(out, folder / "source.obj", 6, -0.25, 1.25);
   EXPECT_GT(fs::file_size(out / "filmstrip.png"), 1000u);
   EXPECT_GT(fs::file_size(out / "filmstrip.svg"), 1000u);
-  if (plots::find_convert()) EXPECT_GT(fs::file_size(out / "animation.gif"), 1000u);
-  else EXPECT_NE(result.error.find("no animation.gif"), std::string::npos);
+  const std::string gif = read_text(out / "animation.gif");
+  EXPECT_EQ(gif.substr(0, 6), "GIF89a");
+  EXPECT_NE(gif.find("NETSCAPE2.0"), std::string::npos) << "loops";
+  EXPECT_EQ(gif.back(), ';') << "a complete GIF ends with its trailer";
+  EXPECT_EQ(read_json(out / "metrics.json")["animation"], "animation.gif");
 }
 
 TEST(InterpolateCli, AcceptsEveryOptionFamily) {
