@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   add_eig3_command(app);
   add_shapes_command(app);
   add_interpolate_command(app);
+  add_view_command(app);
 
   try {
     app.parse(argc, argv);
