@@ -97,14 +97,18 @@ void MeshPainter::paint(cairo_t* cr, const Eigen::Matrix2Xd& vertices, const Vie
   }
   cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
   cairo_set_source_rgb(cr, colours.fill.r, colours.fill.g, colours.fill.b);
-  cairo_set_line_width(cr, line_width);
   if (all_edges_) {
     cairo_fill(cr);
-  } else {  // the outline: the boundary cycles as closed polylines, stroked faster than edge by edge
-    cairo_fill_preserve(cr);
-    cairo_set_source_rgb(cr, colours.edge.r, colours.edge.g, colours.edge.b);
-    cairo_stroke(cr);
+    for (const auto& [a, b] : edges_) {
+      cairo_move_to(cr, x(a), y(a));
+      cairo_line_to(cr, x(b), y(b));
+    }
+  } else {
+    cairo_fill_preserve(cr);  // the outline: the boundary cycles, stroked faster than edge by edge
   }
+  cairo_set_line_width(cr, line_width);
+  cairo_set_source_rgb(cr, colours.edge.r, colours.edge.g, colours.edge.b);
+  cairo_stroke(cr);
 
   const auto flipped_triangles = flipped(vertices);
   if (!flipped_triangles.empty()) {
@@ -118,16 +122,6 @@ void MeshPainter::paint(cairo_t* cr, const Eigen::Matrix2Xd& vertices, const Vie
     cairo_fill_preserve(cr);
     cairo_set_line_width(cr, 1.5);  // an outline keeps triangles smaller than a pixel in sight
     cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-    cairo_stroke(cr);
-  }
-
-  if (all_edges_) {
-    for (const auto& [a, b] : edges_) {
-      cairo_move_to(cr, x(a), y(a));
-      cairo_line_to(cr, x(b), y(b));
-    }
-    cairo_set_line_width(cr, line_width);
-    cairo_set_source_rgb(cr, colours.edge.r, colours.edge.g, colours.edge.b);
     cairo_stroke(cr);
   }
   cairo_restore(cr);

@@ -7,9 +7,9 @@
 // additive, so at a point it is the number of counter-clockwise minus clockwise triangles covering it:
 // the fill is exactly the union of the triangles wherever none is flipped, at the cost of the boundary
 // alone (a 66k-triangle mesh fills as fast as its outline). Flipped triangles (det B_i ≤ 0, the source
-// counter-clockwise) are then filled and outlined in red (the outline keeps the smallest visible), and the
-// edges are stroked: every edge up to `all_edges_limit` triangles, the boundary alone above (finer edges
-// would only grey the picture).
+// counter-clockwise) are drawn over the edges (every edge up to `all_edges_limit` triangles, the boundary
+// alone above: finer edges would only grey the picture), filled and outlined in red, the outline keeping
+// the smallest in sight.
 #include <Eigen/Core>
 
 #include <utility>
