@@ -17,23 +17,11 @@ namespace {
 namespace fs = std::filesystem;
 using namespace affinterp;
 using checks::one_line;
+using checks::read_text;
 using checks::run_cli;
+using checks::write_text;
 
-fs::path scratch(const std::string& name) {
-  const fs::path folder = fs::temp_directory_path() / ("affinterp_cli_test_" + std::to_string(getpid())) / name;
-  fs::remove_all(folder);
-  fs::create_directories(folder);
-  return folder;
-}
-
-void write_text(const fs::path& file, const std::string& text) { std::ofstream(file) << text; }
-
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+fs::path scratch(const std::string& name) { return checks::scratch_folder("affinterp_cli_test", name); }
 
 nlohmann::json read_json(const fs::path& file) {
   std::ifstream in(file);

@@ -13,29 +13,18 @@
 
 #include <chrono>
 #include <fstream>
-#include <sstream>
 #include <thread>
 #include <vector>
 
 namespace {
 
 namespace fs = std::filesystem;
+using affinterp::checks::read_text;
 using affinterp::checks::run_cli;
+using affinterp::checks::write_text;
 
 fs::path scratch(const std::string& name) {
-  const fs::path folder = fs::temp_directory_path() / ("affinterp_interrupt_test_" + std::to_string(getpid())) / name;
-  fs::remove_all(folder);
-  fs::create_directories(folder);
-  return folder;
-}
-
-void write_text(const fs::path& file, const std::string& text) { std::ofstream(file) << text; }
-
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
+  return affinterp::checks::scratch_folder("affinterp_interrupt_test", name);
 }
 
 /// Starts `affinterp ARGS...` with its output discarded; returns its process id.
