@@ -8,7 +8,8 @@ packages=(
   cmake g++ make ninja-build pkg-config
   libeigen3-dev libboost-dev libboost-iostreams-dev libboost-filesystem-dev
   libgtest-dev googletest librapidcheck-dev libbenchmark-dev
-  libgnuplot-iostream-dev gnuplot-nox fonts-dejavu-core imagemagick
+  libgnuplot-iostream-dev gnuplot-nox fonts-dejavu-core
+  libcairo2-dev libgif-dev chromium
   nlohmann-json3-dev libcli11-dev
   libcgal-dev libcgal-demo libxsimd-dev
   libginac-dev

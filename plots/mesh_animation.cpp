@@ -1,62 +1,62 @@
 #include "plots/mesh_animation.hpp"
 
-#include "plots/gnuplot_process.hpp"
-#include "plots/mesh_tables.hpp"
+#include "plots/cairo_page.hpp"
+#include "plots/gif_writer.hpp"
+#include "plots/mesh_painter.hpp"
 
-#include <iomanip>
-#include <sstream>
+#include <cairo.h>
+
+#include <algorithm>
+#include <memory>
 #include <stdexcept>
 
 namespace affinterp::plots {
 
-namespace fs = std::filesystem;
+namespace {
 
-std::optional<fs::path> find_convert() { return find_program("convert"); }
+const MeshColours colours{{0.839, 0.902, 0.961}, {0.173, 0.365, 0.541}};
 
-bool write_animation_gif(const fs::path& gif, const Eigen::Matrix3Xi& triangles, const std::vector<MeshFrame>& frames,
-                         int delay_cs) {
-  const auto convert = find_convert();
-  if (!convert || frames.empty()) return false;
+/// The colours the frames are drawn with and, for antialiased edges and text, 18 steps between each two.
+std::vector<Colour> palette() {
+  const std::vector<Colour> keys{{1, 1, 1}, colours.fill, colours.edge, colours.flipped, {0, 0, 0}};
+  std::vector<Colour> result = keys;
+  for (std::size_t a = 0; a < keys.size(); ++a)
+    for (std::size_t b = a + 1; b < keys.size(); ++b)
+      for (int s = 1; s < 19; ++s) result.push_back(mix(keys[a], keys[b], s / 19.0));
+  return result;
+}
+
+}  // namespace
+
+void write_animation_gif(const std::filesystem::path& gif, const Eigen::Matrix3Xi& triangles,
+                         const std::vector<MeshFrame>& frames, int delay_cs) {
+  if (frames.empty()) throw std::invalid_argument("write_animation_gif: no frames");
   Eigen::Vector2d lo = frames.front().vertices.rowwise().minCoeff(), hi = frames.front().vertices.rowwise().maxCoeff();
   for (const MeshFrame& frame : frames) {
     lo = lo.cwiseMin(frame.vertices.rowwise().minCoeff());
     hi = hi.cwiseMax(frame.vertices.rowwise().maxCoeff());
   }
   const Eigen::Vector2d margin = 0.05 * (hi - lo).cwiseMax(1e-9);
-  lo -= margin;
-  hi += margin;
+  lo -= margin, hi += margin;
   const int width = 480, height = std::clamp(static_cast<int>(width * (hi.y() - lo.y()) / (hi.x() - lo.x())), 120, 960);
+  const View view = centred(lo, hi, fitting_scale(lo, hi, width, height), width / 2.0, height / 2.0);
 
-  fs::path folder = gif.parent_path().empty() ? fs::path(".") : gif.parent_path();
-  folder /= "animation-" + std::to_string(getpid());
-  fs::create_directories(folder);
-  const fs::path log = folder / "gnuplot.log";
-  {
-    const auto gp = start_gnuplot(log);
-    *gp << std::setprecision(12) << "unset border\nunset tics\nunset grid\nset size ratio -1\n"
-       << "set margins 0,0,0,0\nset xrange [" << lo.x() << ":" << hi.x() << "]\nset yrange [" << lo.y() << ":" << hi.y()
-       << "]\nset terminal pngcairo size " << width << "," << height << " font 'DejaVu Sans,10'\n";
-    for (std::size_t f = 0; f < frames.size(); ++f) {
-      const MeshTables tables = mesh_tables(triangles, frames[f].vertices);
-      write_datablock(*gp, "edges", tables.edges);
-      write_datablock(*gp, "triangles", tables.triangles);
-      write_datablock(*gp, "flipped", tables.flipped);
-      std::ostringstream name;
-      name << "frame_" << std::setw(4) << std::setfill('0') << f << ".png";
-      *gp << "set output " << gnuplot_string((folder / name.str()).string()) << "\nset label 1 " << gnuplot_string(frames[f].label)
-         << " at graph 0.02, graph 0.95 noenhanced\n"
-         << mesh_plot_command(!tables.triangles.empty(), !tables.flipped.empty()) << "unset output\n";
-    }
+  const MeshPainter painter(triangles);
+  const std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
+      cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height), cairo_surface_destroy);
+  const std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr(cairo_create(surface.get()), cairo_destroy);
+  GifWriter writer(gif, width, height, palette(), delay_cs);
+  for (const MeshFrame& frame : frames) {
+    cairo_set_source_rgb(cr.get(), 1, 1, 1);
+    cairo_paint(cr.get());
+    painter.paint(cr.get(), frame.vertices, view, colours);
+    left_text(cr.get(), frame.label, 8, 18, 13);
+    cairo_surface_flush(surface.get());
+    if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS)
+      throw std::runtime_error("cannot draw " + gif.string() + ": " + cairo_status_to_string(cairo_status(cr.get())));
+    writer.add_frame(cairo_image_surface_get_data(surface.get()), cairo_image_surface_get_stride(surface.get()));
   }
-  const std::string command = shell_quoted(*convert) + " -delay " + std::to_string(delay_cs) + " -loop 0 " +
-                              shell_quoted(folder) + "/frame_*.png " + shell_quoted(gif) + " 2>/dev/null";
-  const int status = std::system(command.c_str());
-  std::error_code ignored;
-  const bool drawn = fs::exists(folder / "frame_0000.png");
-  fs::remove_all(folder, ignored);
-  if (!drawn) throw std::runtime_error("gnuplot drew no animation frames");
-  if (status != 0 || !fs::exists(gif)) throw std::runtime_error("convert failed to write " + gif.string());
-  return true;
+  writer.finish();
 }
 
 }  // namespace affinterp::plots

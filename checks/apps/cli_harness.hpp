@@ -1,5 +1,6 @@
 #pragma once
-// Running the affinterp executable from a test: its exit status and standard error.
+// Running the affinterp executable from a test: its exit status and standard error; scratch folders and
+// text files around it.
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -26,6 +27,24 @@ inline CliResult run_cli(const std::string& args) {
   text << in.rdbuf();
   std::filesystem::remove(err);
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), text.str()};
+}
+
+/// A fresh, empty folder `name` in this test program's own temporary folder, `program`_PID.
+inline std::filesystem::path scratch_folder(const std::string& program, const std::string& name) {
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / (program + "_" + std::to_string(getpid())) / name;
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  return folder;
+}
+
+inline void write_text(const std::filesystem::path& file, const std::string& text) { std::ofstream(file) << text; }
+
+inline std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 /// True when `text` is exactly one line.

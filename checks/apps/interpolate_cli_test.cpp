@@ -4,7 +4,6 @@
 #include "checks/inputs/shared_meshes.hpp"
 #include "experiments/inputs/mesh_file.hpp"
 #include "experiments/inputs/shapes/catalogue.hpp"
-#include "plots/mesh_animation.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -18,23 +17,11 @@ namespace {
 namespace fs = std::filesystem;
 using namespace affinterp;
 using checks::one_line;
+using checks::read_text;
 using checks::run_cli;
+using checks::write_text;
 
-fs::path scratch(const std::string& name) {
-  const fs::path folder = fs::temp_directory_path() / ("affinterp_cli_test_" + std::to_string(getpid())) / name;
-  fs::remove_all(folder);
-  fs::create_directories(folder);
-  return folder;
-}
-
-void write_text(const fs::path& file, const std::string& text) { std::ofstream(file) << text; }
-
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+fs::path scratch(const std::string& name) { return checks::scratch_folder("affinterp_cli_test", name); }
 
 nlohmann::json read_json(const fs::path& file) {
   std::ifstream in(file);
@@ -82,7 +69,7 @@ TEST(InterpolateCli, RunsOnEveryGeneratedShape) {
   }
 }
 
-TEST(InterpolateCli, DrawsAFilmstripAndAnAnimation) {
+TEST(InterpolateCli, DrawsAFilmstripAnAnimationAndAViewer) {
   const fs::path folder = scratch("figures");
   ASSERT_EQ(run_cli("shapes man-wave --out " + folder.string()).status, 0);
   const fs::path out = folder / "out";
@@ -92,8 +79,48 @@ TEST(InterpolateCli, DrawsAFilmstripAndAnAnimation) {
   expect_frames(out, folder / "source.obj", 6, -0.25, 1.25);
   EXPECT_GT(fs::file_size(out / "filmstrip.png"), 1000u);
   EXPECT_GT(fs::file_size(out / "filmstrip.svg"), 1000u);
-  if (plots::find_convert()) EXPECT_GT(fs::file_size(out / "animation.gif"), 1000u);
-  else EXPECT_NE(result.error.find("no animation.gif"), std::string::npos);
+  const std::string gif = read_text(out / "animation.gif");
+  EXPECT_EQ(gif.substr(0, 6), "GIF89a");
+  EXPECT_NE(gif.find("NETSCAPE2.0"), std::string::npos) << "loops";
+  EXPECT_EQ(gif.back(), ';') << "a complete GIF ends with its trailer";
+  const std::string page = read_text(out / "viewer.html");
+  EXPECT_NE(page.find("id=\"affinterp-data\""), std::string::npos);
+  for (const char* external : {"src=\"http", "href=\"http", "fetch(", "XMLHttpRequest", "import("})
+    EXPECT_EQ(page.find(external), std::string::npos) << "the page is self-contained: " << external;
+  const nlohmann::json metrics = read_json(out / "metrics.json");
+  EXPECT_EQ(metrics["animation"], "animation.gif");
+  EXPECT_EQ(metrics["viewer"], "viewer.html");
+}
+
+TEST(ViewCli, ComparesRunsAndRefusesWhatIsNotARun) {
+  const fs::path folder = scratch("view");
+  ASSERT_EQ(run_cli("shapes man-wave --out " + folder.string()).status, 0);
+  const std::string io = " --source " + (folder / "source.obj").string() + " --target " + (folder / "target.obj").string();
+  ASSERT_EQ(run_cli("interpolate" + io + " --frames 4 --no-figures --out " + (folder / "a").string()).status, 0);
+  ASSERT_EQ(run_cli("interpolate" + io + " --frames 5 --energy F --no-figures --out " + (folder / "b").string()).status, 0);
+  const auto result = run_cli("view " + (folder / "a").string() + " " + (folder / "b").string() + " -o " +
+                              (folder / "compare.html").string());
+  ASSERT_EQ(result.status, 0) << result.error;
+  EXPECT_GT(fs::file_size(folder / "compare.html"), 1000u);
+
+  write_text(folder / "compare.html", "earlier\n");
+  fs::create_directories(folder / "empty");
+  fs::create_directories(folder / "broken");
+  write_text(folder / "broken" / "metrics.json", "{\"source\": 1");
+  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+           {(folder / "empty").string(), "no metrics.json"},
+           {(folder / "broken").string(), "metrics.json: [json.exception.parse_error"},
+           {(folder / "missing").string(), "missing"},
+           {(folder / "a").string() + " --nonsense", "--nonsense"}}) {
+    const auto refused = run_cli("view " + args + " -o " + (folder / "compare.html").string());
+    EXPECT_NE(refused.status, 0) << args;
+    EXPECT_TRUE(one_line(refused.error)) << refused.error;
+    EXPECT_NE(refused.error.find(message), std::string::npos) << refused.error;
+    EXPECT_EQ(read_text(folder / "compare.html"), "earlier\n");
+  }
+  std::size_t files = 0;
+  for (const auto& entry : fs::directory_iterator(folder)) files += entry.path().filename().string().find(".partial-") != std::string::npos;
+  EXPECT_EQ(files, 0u) << "no partial page left";
 }
 
 TEST(InterpolateCli, AcceptsEveryOptionFamily) {

@@ -26,6 +26,11 @@ one_line_error() {
 expect 0 "--help" -- "$affinterp" --help
 expect 0 "claims --help" -- "$affinterp" claims --help
 expect 0 "report --help" -- "$affinterp" report --help
+for command in shapes interpolate view exp3 eig3; do
+  expect 0 "$command --help" -- "$affinterp" "$command" --help
+done
+expect 2 "view without a run" -- "$affinterp" view -o "$work/compare.html"
+one_line_error "view without a run"
 expect 2 "no command" -- "$affinterp"
 one_line_error "no command"
 expect 2 "unknown option" -- "$affinterp" claims --bogus

@@ -1,5 +1,5 @@
 // `affinterp interpolate`: global interpolation (Kaji §4) between a source and a target mesh, written as
-// OBJ frames, a filmstrip (PNG + SVG), an animated GIF and per-frame metrics.
+// OBJ frames, a filmstrip (PNG + SVG), an animated GIF, an interactive viewer and per-frame metrics.
 #include "experiments/apps/cli/command.hpp"
 #include "experiments/support/progress.hpp"
 #include "experiments/support/staged_output.hpp"
@@ -8,6 +8,7 @@
 #include "experiments/inputs/mesh_pair.hpp"
 #include "plots/mesh_animation.hpp"
 #include "plots/mesh_strip.hpp"
+#include "plots/viewer.hpp"
 #include "theory/global/gauge.hpp"
 #include "theory/global/interpolation.hpp"
 #include "theory/global/mesh_validation.hpp"
@@ -132,10 +133,12 @@ void run(const InterpolateOptions& o) {
 
   StagedOutput staged(o.out);
   nlohmann::json frames = nlohmann::json::array();
-  std::vector<plots::MeshFrame> drawn;
+  const std::string title = fs::path(o.source).filename().string() + " -> " + fs::path(o.target).filename().string() +
+                            " (" + o.local + ", E^" + o.energy + ")";
+  plots::ViewerRun run{title, pair.source, {}, {}, {}, {}};
   const bool long_run = static_cast<double>(o.frames) * static_cast<double>(pair.source.triangle_count()) > 2e5;
-  std::optional<Progress> progress;
-  if (long_run) progress.emplace("interpolating", static_cast<std::size_t>(o.frames));
+  std::optional<Progress> progress;  // the frames, then the filmstrip, the GIF and the viewer
+  if (long_run) progress.emplace("interpolate", static_cast<std::size_t>(o.frames) + (o.figures ? 3 : 0));
   global::Mesh frame = pair.source;  // frames keep the files' face list, clockwise ones included
   if (pair.reoriented) global::reverse_orientation(frame);
   for (int k = 0; k < o.frames; ++k) {
@@ -143,12 +146,12 @@ void run(const InterpolateOptions& o) {
     frame.vertices = interpolation->vertices_at(t);
     io::write_obj(frame, staged.staging() / frame_name(k));
     nlohmann::json entry = {{"index", k}, {"t", t}, {"file", frame_name(k)}};
-    entry.update(metrics_json(global::frame_metrics(pair.source, frame.vertices)));
+    const global::FrameMetrics metrics = global::frame_metrics(pair.source, frame.vertices);
+    entry.update(metrics_json(metrics));
     frames.push_back(entry);
-    if (o.figures) drawn.push_back({frame.vertices, time_label(t)});
+    if (o.figures) run.times.push_back(t), run.frames.push_back(frame.vertices), run.metrics.push_back(metrics);
     if (progress) progress->advance();
   }
-  progress.reset();  // ends the progress line before any other message
 
   nlohmann::json document = {
       {"source", o.source},
@@ -166,17 +169,20 @@ void run(const InterpolateOptions& o) {
   if (default_edge)
     document["options"]["default_edge_direction"] = std::to_string(default_edge->i) + ":" + std::to_string(default_edge->j);
   if (o.figures) {
-    std::vector<plots::MeshFrame> strip;
+    std::vector<plots::MeshFrame> drawn, strip;
+    for (std::size_t k = 0; k < run.frames.size(); ++k) drawn.push_back({run.frames[k], time_label(run.times[k])});
     const std::size_t n = drawn.size(), shown = std::min(n, filmstrip_frames);
     for (std::size_t j = 0; j < shown; ++j) strip.push_back(drawn[(2 * j * (n - 1) + shown - 1) / (2 * (shown - 1))]);
-    plots::draw_filmstrip(staged.staging() / "filmstrip", pair.source.triangles, strip,
-                          fs::path(o.source).filename().string() + " -> " + fs::path(o.target).filename().string() +
-                              " (" + o.local + ", E^" + o.energy + ")");
-    if (plots::write_animation_gif(staged.staging() / "animation.gif", pair.source.triangles, drawn))
-      document["animation"] = "animation.gif";
-    else
-      std::cerr << "note: ImageMagick's convert not found: no animation.gif\n";
+    plots::draw_filmstrip(staged.staging() / "filmstrip", pair.source.triangles, strip, title);
+    if (progress) progress->advance();
+    plots::write_animation_gif(staged.staging() / "animation.gif", pair.source.triangles, drawn);
+    document["animation"] = "animation.gif";
+    if (progress) progress->advance();
+    plots::write_viewer(staged.staging() / "viewer.html", title, {run});
+    document["viewer"] = "viewer.html";
+    if (progress) progress->advance();
   }
+  progress.reset();  // ends the progress line before any other message
   std::ofstream(staged.staging() / "metrics.json") << document.dump(2) << "\n";
 
   // Earlier frames beyond this run's count would mix two runs: remove them, then move the new files in.
@@ -198,7 +204,8 @@ void add_interpolate_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "interpolate",
       "Interpolate between two compatible 2D triangle meshes (Kaji et al. 2012, §3-4): writes OUT/frame_0000.obj ..., "
-      "OUT/filmstrip.png/.svg, OUT/animation.gif (with ImageMagick) and OUT/metrics.json. Vertex indices are 0-based "
+      "OUT/filmstrip.png/.svg, OUT/animation.gif, OUT/viewer.html (interactive; viewer.html#frame=K opens at frame K) and "
+      "OUT/metrics.json. Vertex indices are 0-based "
       "(the order of the v lines). Meshes: triangles only (polygons refused), z = 0; when every source triangle runs "
       "clockwise all are reversed for the computation (frames keep the files' face list); mixed orientations, zero-area "
       "source triangles and flipped target triangles (unless allowed) are refused. On any error OUT keeps its earlier "
@@ -237,7 +244,7 @@ void add_interpolate_command(CLI::App& app) {
   cmd->add_option("--time-range", o->time_range, "T0:T1, the times of the first and last frame (extrapolation allowed)")
       ->capture_default_str();
   cmd->add_flag("--allow-flipped-target", o->allow_flipped_target, "Accept target triangles flipped against the source");
-  cmd->add_flag("!--no-figures", o->figures, "Write only frames and metrics.json (no filmstrip, no GIF)");
+  cmd->add_flag("!--no-figures", o->figures, "Write only frames and metrics.json (no filmstrip, GIF or viewer)");
   cmd->callback([o] { run(*o); });
 }
 

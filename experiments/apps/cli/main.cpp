@@ -1,10 +1,12 @@
 // affinterp: the suite's command-line interface. Each command is in its own file (cmd_*.cpp).
 #include "experiments/apps/cli/command.hpp"
+#include "experiments/support/interrupt_cleanup.hpp"
 
 #include <iostream>
 
 int main(int argc, char** argv) {
   using namespace affinterp::cli;
+  affinterp::remove_registered_paths_on_interrupt();  // an interrupted run leaves no staging folder
   CLI::App app{
       "affinterp: decide the claims of Kaji et al. (SCA 2012) and Matsushita (thesis 2015) on rigid 2D "
       "shape interpolation with affine maps, and run their algorithms.",
@@ -16,6 +18,7 @@ int main(int argc, char** argv) {
   add_eig3_command(app);
   add_shapes_command(app);
   add_interpolate_command(app);
+  add_view_command(app);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,137 @@
+// What the figures cost a user of `affinterp interpolate` (issue 12): the octopus of ../shared (66,527
+// triangles) curled by half a turn (shapes::Curl, θ_end = π), 17 frames, run end to end as a process with
+// its default outputs (OBJ frames, metrics.json, filmstrip PNG + SVG, animated GIF, viewer.html) and with
+// --no-figures. Each iteration runs both, one after the other, so that the load of a shared machine weighs
+// on both alike; the time is the default run's wall time, and the counters give the --no-figures run's,
+// their ratio (the target: at most 2) and each run's peak resident memory. Without ../shared, the
+// project's generated man meshed to a similar size (65,326 triangles) stands in (the name says which).
+//
+// Measured on 2 shared, loaded cores with the octopus (ratios of wall times; see the commit that added
+// this file): figures drawn in-process (Cairo, giflib) make the default run 1.2× the --no-figures run
+// (filmstrip 0.12 s, 17-frame GIF 0.19 s); one gnuplot session drawing every GIF frame through its
+// `gif animate` terminal (no ImageMagick) took 1.9 s for the filmstrip and 2.8 s for the GIF, about 3.2×;
+// the earlier pngcairo frames joined by ImageMagick's convert 3.8× (convert alone 3.5 s).
+#include "experiments/apps/bench/bench_context.hpp"
+#include "experiments/inputs/mesh_file.hpp"
+#include "experiments/inputs/shapes/curl.hpp"
+#include "experiments/inputs/shapes/man.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+extern char** environ;
+
+namespace affinterp {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Workload {
+  std::string name;
+  fs::path folder, source, target;
+  Eigen::Index triangles = 0;
+};
+
+/// The source and its curl written as OBJ files once.
+const Workload& workload() {
+  static const Workload w = [] {
+    const fs::path shared = AFFINTERP_SOURCE_DIR "/../shared/data/meshes";
+    Workload load;
+    load.folder = fs::temp_directory_path() / ("affinterp_bench_figures_" + std::to_string(getpid()));
+    global::Mesh source;
+    if (fs::exists(shared / "octopus.obj")) {
+      load.name = "octopus", source = io::read_mesh(shared / "octopus.obj");
+    } else {
+      load.name = "man-65k", source = shapes::man(0.0137);
+    }
+    const Eigen::Vector2d low = source.vertices.rowwise().minCoeff(), high = source.vertices.rowwise().maxCoeff();
+    const shapes::Curl curl{high.x() - low.x(), std::numbers::pi, 1};
+    global::Mesh target = source;
+    // About the top edge: every point lies on the outer side of the curl, so no triangle flips (about
+    // the middle, the octopus's half height would exceed the curl's radius L/π).
+    target.vertices = curl.apply(Eigen::Matrix2Xd(source.vertices.colwise() - Eigen::Vector2d(low.x(), high.y())), 1);
+    fs::create_directories(load.folder);
+    load.source = load.folder / "source.obj", load.target = load.folder / "target.obj";
+    io::write_obj(source, load.source);
+    io::write_obj(target, load.target);
+    load.triangles = source.triangle_count();
+    return load;
+  }();
+  return w;
+}
+
+struct Run {
+  double seconds, peak_mb;
+};
+
+/// `affinterp interpolate` on the workload, 17 frames, into a fresh folder; wall time and peak memory.
+Run interpolate(bool figures) {
+  const Workload& w = workload();
+  const fs::path out = w.folder / (figures ? "default" : "no-figures");
+  fs::remove_all(out);
+  std::vector<std::string> args{AFFINTERP_CLI,     "interpolate", "--source", w.source.string(), "--target",
+                                w.target.string(), "--frames",    "17",       "--out",           out.string()};
+  if (!figures) args.push_back("--no-figures");
+  std::vector<char*> argv;
+  for (auto& arg : args) argv.push_back(arg.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t quiet;
+  posix_spawn_file_actions_init(&quiet);
+  posix_spawn_file_actions_addopen(&quiet, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&quiet, 2, "/dev/null", O_WRONLY, 0);
+  const auto start = std::chrono::steady_clock::now();
+  pid_t pid = 0;
+  if (posix_spawn(&pid, AFFINTERP_CLI, &quiet, nullptr, argv.data(), environ) != 0)
+    throw std::runtime_error("cannot start " AFFINTERP_CLI);
+  posix_spawn_file_actions_destroy(&quiet);
+  int status = 0;
+  rusage usage{};
+  wait4(pid, &status, 0, &usage);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) throw std::runtime_error("affinterp interpolate failed");
+  return {seconds, static_cast<double>(usage.ru_maxrss) / 1024};
+}
+
+void default_against_no_figures(benchmark::State& state) {
+  double with = 0, without = 0, peak_with = 0, peak_without = 0;
+  for (auto _ : state) {
+    const Run plain = interpolate(false), full = interpolate(true);
+    state.SetIterationTime(full.seconds);
+    with += full.seconds, without += plain.seconds;
+    peak_with = std::max(peak_with, full.peak_mb), peak_without = std::max(peak_without, plain.peak_mb);
+  }
+  const double n = static_cast<double>(state.iterations());
+  state.counters["no_figures_ms"] = 1e3 * without / n;
+  state.counters["ratio"] = with / without;
+  state.counters["peak_MB"] = peak_with;
+  state.counters["no_figures_peak_MB"] = peak_without;
+  state.counters["triangles"] = static_cast<double>(workload().triangles);
+}
+
+}  // namespace
+}  // namespace affinterp
+
+int main(int argc, char** argv) {
+  const std::string name = "interpolate/default_vs_no_figures/17_frames/" + affinterp::workload().name;
+  benchmark::RegisterBenchmark(name.c_str(), affinterp::default_against_no_figures)
+      ->Unit(benchmark::kMillisecond)
+      ->UseManualTime()
+      ->Iterations(2)
+      ->Repetitions(3)
+      ->ReportAggregatesOnly(true);
+  const int status = affinterp::bench::run_benchmarks(argc, argv);
+  std::filesystem::remove_all(affinterp::workload().folder);
+  return status;
+}
