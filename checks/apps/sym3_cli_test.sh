@@ -48,8 +48,9 @@ expect_run "a peer's failure is not an overflow" 1 "" \
 
 # The whole double range (issue 11): subnormal entries (exp S = I + S, rounded), 10^±300 beside each
 # other, entries whose squares overflow, a spectrum just below exp's overflow.
-expect_run "subnormal entries" 0 "1 9.9999999999999694e-311 0 9.9999999999999694e-311 1 0 0 0 1" "^$" \
-  "1e-310 1e-310 0  1e-310 1e-310 0  0 0 1e-310\n" exp3
+out=$(printf '1e-310 1e-310 0  1e-310 1e-310 0  0 0 1e-310\n' | "$affinterp" exp3)
+awk -v l="$out" 'BEGIN { n = split(l, x, " "); d = x[2] * 1e300 - 1e-10; exit !(n == 9 && x[1] == 1 && x[5] == 1 &&
+  x[9] == 1 && x[2] == x[4] && d * d < 1e-44 && x[3] == 0 && x[6] == 0) }' || fail "exp3 subnormal entries (I + S): got '$out'"
 expect_run "mixed scales" 0 "0 0 0 0 1 0 0 0 7.3890560989306504" "^$" "-1e300 0 0 0 1e-300 0 0 0 2\n" exp3
 expect_run "squares overflow" 0 "0.5 0.5 0 0.5 0.5 0 0 0 1" "^$" "-1e200 1e200 0 1e200 -1e200 0 0 0 0\n" exp3
 out=$(printf '709.7 0 0 0 709.7 0 0 0 709.7\n' | "$affinterp" exp3 | awk '{print $1}')
