@@ -121,6 +121,13 @@ Ball Balls::frobenius_norm() const {
   return out;
 }
 
+double Balls::relative_radius() const {
+  const double radius = frobenius_radius();
+  if (radius == 0) return 0;
+  const double norm = frobenius_norm().lower();
+  return norm > 0 ? radius / norm : std::numeric_limits<double>::infinity();
+}
+
 std::string Balls::mid_string(int i, int j, int digits) const {
   char* text = arf_get_str(arb_midref(at(*impl_, i, j)), digits);
   std::string out(text);

@@ -40,6 +40,9 @@ class Balls {
   double frobenius_radius() const;
   /// The Frobenius norm of the (true) matrix, as a ball.
   Ball frobenius_norm() const;
+  /// frobenius_radius() / (lower bound of the Frobenius norm): the relative width of the enclosure
+  /// (+∞ when the norm may be 0 and the radius is not; 0 for an exact matrix).
+  double relative_radius() const;
   /// The exact midpoint in decimal with `digits` significant digits (e.g. to read it into a
   /// Boost.Multiprecision number).
   std::string mid_string(int i, int j = 0, int digits = 40) const;
