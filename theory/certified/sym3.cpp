@@ -19,8 +19,8 @@ using Matrix = std::array<std::array<Num, 3>, 3>;
 void keep_mid(Num& x) { mag_zero(arb_radref(x.get())); }
 
 /// An approximate eigenbasis of S at `bits` bits: cyclic Jacobi on midpoints (rounding errors are
-/// irrelevant here; the certificate comes afterwards). Rotates while |a_pq| exceeds
-/// 2^−(bits+8) max(√|a_pp a_qq|, 2^−bits ‖S‖_F).
+/// irrelevant here; the certificate comes afterwards). Rotates while |a_pq| exceeds both
+/// 2^−(bits+8) √|a_pp a_qq| (relative accuracy for graded matrices) and 2^−(2·bits+8) ‖S‖_F.
 Matrix approximate_eigenbasis(const Mat3& S, slong bits) {
   Matrix a, V;
   for (int i = 0; i < 3; ++i)
@@ -28,23 +28,22 @@ Matrix approximate_eigenbasis(const Mat3& S, slong bits) {
       arb_set_d(a[i][j].get(), S(std::min(i, j), std::max(i, j)));
       arb_set_si(V[i][j].get(), i == j ? 1 : 0);
     }
-  Num norm, t, u, theta, c, s, g, h, threshold, floor;
+  // Compared in squares: a_pq² against 2^−2(bits+8) |a_pp a_qq| and 2^−4·bits−16 ‖S‖²_F.
+  Num norm2, t, u, theta, c, s, g, h, threshold2, floor2, apq2;
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) arb_addmul(norm.get(), a[i][j].get(), a[i][j].get(), bits);
-  arb_sqrtpos(norm.get(), norm.get(), bits);
-  arb_mul_2exp_si(floor.get(), norm.get(), -2 * bits - 8);
-  keep_mid(floor);
+    for (int j = 0; j < 3; ++j) arb_addmul(norm2.get(), a[i][j].get(), a[i][j].get(), bits);
+  arb_mul_2exp_si(floor2.get(), norm2.get(), -4 * bits - 16);
+  keep_mid(floor2);
   constexpr std::array<std::array<int, 2>, 3> pairs{{{0, 1}, {0, 2}, {1, 2}}};
   for (int sweep = 0; sweep < 200; ++sweep) {
     bool rotated = false;
     for (const auto [p, q] : pairs) {
       Num& apq = a[p][q];
-      arb_mul(t.get(), a[p][p].get(), a[q][q].get(), bits);
-      arb_abs(t.get(), t.get());
-      arb_sqrtpos(threshold.get(), t.get(), bits);
-      arb_mul_2exp_si(threshold.get(), threshold.get(), -bits - 8);
-      keep_mid(threshold);
-      if (arf_cmpabs(apq.mid(), threshold.mid()) <= 0 || arf_cmpabs(apq.mid(), floor.mid()) <= 0) continue;
+      arb_mul(threshold2.get(), a[p][p].get(), a[q][q].get(), bits);
+      arb_mul_2exp_si(threshold2.get(), threshold2.get(), -2 * bits - 16);
+      arb_sqr(apq2.get(), apq.get(), bits);
+      keep_mid(threshold2), keep_mid(apq2);
+      if (arf_cmpabs(apq2.mid(), threshold2.mid()) <= 0 || arf_cmpabs(apq2.mid(), floor2.mid()) <= 0) continue;
       rotated = true;
       // θ = (a_qq − a_pp)/(2 a_pq), t = sign θ / (|θ| + √(θ² + 1)), c = 1/√(t² + 1), s = t c.
       arb_sub(theta.get(), a[q][q].get(), a[p][p].get(), bits);

@@ -16,7 +16,7 @@
 // the balls are still valid, only wider.
 //
 // What it cannot certify cheaply: the relative accuracy of S^t and log S costs p ≈ log₂ κ₂(S) + the
-// target's bits (κ₂ up to 2²¹⁰⁰ for double matrices: a few thousand bits, still milliseconds); the
+// target's bits (κ₂ up to 2²¹⁰⁰ for double matrices: a few thousand bits, under a millisecond); the
 // overflow of exp S is undecidable when an entry equals the largest double to within the radius.
 //
 // exp_taylor is an independent check of exp: Arb's arb_mat_exp (Taylor series with a rigorous tail bound,

@@ -54,14 +54,15 @@ Decomposition<Bits> jacobi(const Mat3& S) {
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) norm2 += a[i][j] * a[i][j];
   out.norm = square_root(norm2);
-  const R floor = ldexp(out.norm, -2 * static_cast<int>(Bits));
+  // Compared in squares: a_pq² against 2^−2(Bits+8) |a_pp a_qq| and (2^−2·Bits ‖S‖_F)².
+  const R floor2 = ldexp(norm2, -4 * static_cast<int>(Bits));
   constexpr std::array<std::array<int, 2>, 3> pairs{{{0, 1}, {0, 2}, {1, 2}}};
   for (int sweep = 0; sweep < 100; ++sweep) {
     bool rotated = false;
     for (const auto [p, q] : pairs) {
       const R apq = a[p][q];
-      const R threshold = ldexp(square_root(abs(a[p][p] * a[q][q])), -static_cast<int>(Bits) - 8);
-      if (abs(apq) <= std::max(threshold, floor)) continue;
+      const R apq2 = apq * apq;
+      if (apq2 <= floor2 || apq2 <= ldexp(abs(a[p][p] * a[q][q]), -2 * static_cast<int>(Bits) - 16)) continue;
       rotated = true;
       const R theta = (a[q][q] - a[p][p]) / (2 * apq);
       R t = 1 / (abs(theta) + square_root(theta * theta + 1));
