@@ -13,6 +13,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev
   libcgal-dev libcgal-demo libxsimd-dev
   libginac-dev
+  libflint-arb-dev
   clang libclang-rt-14-dev clang-format
 )
 missing=()

@@ -37,8 +37,24 @@ expect_run "not a number" 1 "0 0 0" "line 2: 'x' is not a number" "0 0 0 0 0 0 0
 expect_run "not symmetric" 1 "" "line 1: not symmetric" "1 2 3 4 5 6 7 8 9\n" exp3
 expect_run "not finite" 1 "" "line 1: 'inf' is not finite" "1 0 0 0 1 0 0 0 inf\n" exp3
 expect_run "overflow" 1 "" "line 1: '1e999' is not finite" "1 0 0 0 1 0 0 0 1e999\n" eig3
-expect_run "overflowing exp" 1 "1 0 0 0 1 0 0 0 1" "line 2: exp S is not finite" \
+expect_run "overflowing exp" 1 "1 0 0 0 1 0 0 0 1" \
+  "^affinterp: line 2: exp S overflows double: its largest eigenvalue 1e\\+200 exceeds log\\(DBL_MAX\\) = 709\\.78" \
   "0 0 0 0 0 0 0 0 0\n1e200 0 0 0 -1e200 0 0 0 0\n" exp3
+expect_run "just above log(DBL_MAX)" 1 "" "^affinterp: line 1: exp S overflows double: its largest eigenvalue 709\\.9 exceeds" \
+  "709.9 0 0 0 0 0 0 0 0\n" exp3
+expect_run "a peer's failure is not an overflow" 1 "" \
+  "^affinterp: line 1: thesis-improved-sd gives a non-finite result although exp S is finite \\(largest eigenvalue 3e-160," \
+  "1e-160 2e-160 0 2e-160 1e-160 0 0 0 3e-160\n" exp3 --algorithm thesis-improved-sd
+
+# The whole double range (issue 11): subnormal entries (exp S = I + S, rounded), 10^±300 beside each
+# other, entries whose squares overflow, a spectrum just below exp's overflow.
+out=$(printf '1e-310 1e-310 0  1e-310 1e-310 0  0 0 1e-310\n' | "$affinterp" exp3)
+awk -v l="$out" 'BEGIN { n = split(l, x, " "); d = x[2] * 1e300 - 1e-10; exit !(n == 9 && x[1] == 1 && x[5] == 1 &&
+  x[9] == 1 && x[2] == x[4] && d * d < 1e-44 && x[3] == 0 && x[6] == 0) }' || fail "exp3 subnormal entries (I + S): got '$out'"
+expect_run "mixed scales" 0 "0 0 0 0 1 0 0 0 7.3890560989306504" "^$" "-1e300 0 0 0 1e-300 0 0 0 2\n" exp3
+expect_run "squares overflow" 0 "0.5 0.5 0 0.5 0.5 0 0 0 1" "^$" "-1e200 1e200 0 1e200 -1e200 0 0 0 0\n" exp3
+out=$(printf '709.7 0 0 0 709.7 0 0 0 709.7\n' | "$affinterp" exp3 | awk '{print $1}')
+[[ "$out" =~ ^1\.6[0-9]*e\+308$ ]] || fail "exp3 e^709.7: got '$out'"
 expect_run "too few" 1 "" "line 1: expected 9 numbers" "1 0 0 0 1 0 0 0\n" exp3
 expect_run "too many" 1 "" "line 1: expected 9 numbers" "1 0 0 0 1 0 0 0 1 1\n" exp3
 

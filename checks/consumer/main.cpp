@@ -6,6 +6,9 @@
 #ifdef CONSUMER_HAS_ORIGIN
 #include "theory/origin/two_triangles.hpp"
 #endif
+#ifdef CONSUMER_HAS_CERTIFIED
+#include "theory/certified/sym3.hpp"
+#endif
 
 #include <cmath>
 #include <cstdio>
@@ -43,6 +46,13 @@ int main() {
 
 #ifdef CONSUMER_HAS_ORIGIN
   expect(affinterp::origin::thesis_two_triangles().A.size() == 2, "origin study");
+#endif
+#ifdef CONSUMER_HAS_CERTIFIED
+  // The certified exp of diag(1, 2, 3) certifies ours to within 10⁻¹⁵.
+  const auto certified = affinterp::certified::exp(Eigen::Vector3d(1, 2, 3).asDiagonal().toDenseMatrix());
+  expect(certified.status == affinterp::certified::Status::certified &&
+             affinterp::certified::relative_error(E, certified.value).upper() < 1e-15,
+         "certified exponential");
 #endif
   std::puts(failures == 0 ? "consumer: affinterp::theory works from its install" : "consumer: FAILED");
   return failures == 0 ? 0 : 1;

@@ -6,7 +6,7 @@ set -euo pipefail
 cd "$1"
 
 # folder: the folders its files may include ("theory" alone for theory/ except that only theory/origin may
-# include theory/origin).
+# include theory/origin, only theory/certified theory/certified: the components on GiNaC and Arb).
 declare -A allowed=(
   [theory]="theory"
   [reports]="reports"
@@ -27,6 +27,9 @@ for folder in "${!allowed[@]}"; do
     done
     if [[ $target == theory/origin/* && $file != theory/origin/* && $folder == theory ]]; then
       ok=0  # affinterp::theory must build without GiNaC
+    fi
+    if [[ $target == theory/certified/* && $file != theory/certified/* && $folder == theory ]]; then
+      ok=0  # affinterp::theory must build without Arb
     fi
     if ((!ok)); then
       echo "$file:$line: includes $target, above its layer ($folder may include: ${allowed[$folder]})"

@@ -2,7 +2,11 @@
 // quick size. The tolerances state what each algorithm achieves (peers can be inaccurate); ours must
 // meet its target: relative Frobenius error ≤ 2·10⁻¹⁵·max(1, ‖S‖₂).
 #include "experiments/inputs/sym3/families.hpp"
+#include "theory/sym3/affinterp.hpp"
 #include "theory/sym3/reference.hpp"
+#ifdef AFFINTERP_HAS_CERTIFIED
+#include "theory/certified/sym3.hpp"
+#endif
 
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
@@ -49,11 +53,13 @@ const std::vector<Sample>& samples(const Family& family) {
   return out;
 }
 
-/// Every family of experiments/inputs/sym3/families.hpp, then the edge cases as a family "edge".
+/// Every family of experiments/inputs/sym3/families.hpp, then the edge cases as a family "edge". The
+/// whole-double-range family needs the certified references: FullRangeFamilyAgainstCertifiedReferences.
 std::vector<std::pair<std::string, const std::vector<Sample>*>> all_samples() {
   static const std::vector<Sample> edges = edge_cases();
   std::vector<std::pair<std::string, const std::vector<Sample>*>> out;
-  for (const Family& family : families()) out.emplace_back(family.name, &samples(family));
+  for (const Family& family : families())
+    if (!family.whole_double_range) out.emplace_back(family.name, &samples(family));
   out.emplace_back("edge", &edges);
   return out;
 }
@@ -141,6 +147,56 @@ TEST(Sym3Accuracy, BatchedMatchesScalar) {
     }
   }
 }
+
+#ifdef AFFINTERP_HAS_CERTIFIED
+// The "full-range" family against Arb-certified references: ours (scalar and batched) is non-finite
+// exactly where exp S overflows, and elsewhere within 2·10⁻¹⁵ max(1, ‖S‖₂) relative plus the floor 2⁻¹⁰⁷²
+// of results near the smallest normal double; its eigenvalues within 4·10⁻¹⁵ max(1, ‖S‖₂). The peers are
+// reported: their worst error over that bound, and how many results are non-finite where exp S is finite.
+TEST(Sym3Accuracy, FullRangeFamilyAgainstCertifiedReferences) {
+  const auto family = std::ranges::find_if(families(), &Family::whole_double_range);
+  ASSERT_NE(family, families().end());
+  const std::vector<Mat3> draws = family->draw(*family, 2015, 60);
+  std::vector<Mat3> batched(draws.size());
+  exp_batched(draws, batched);
+  std::map<std::string, std::pair<double, int>> peers;  // worst scaled error, wrongly non-finite
+  int overflowing = 0;
+  for (std::size_t k = 0; k < draws.size(); ++k) {
+    const Mat3& S = draws[k];
+    const certified::CertifiedMatrix truth = certified::exp(S);
+    const certified::CertifiedEigenvalues lambda = certified::eigenvalues(S);
+    ASSERT_NE(truth.status, certified::Status::too_wide) << k;
+    ASSERT_EQ(lambda.status, certified::Status::certified) << k;
+    const double norm = std::max(std::abs(lambda.value.mid(0)), std::abs(lambda.value.mid(2)));
+    if (norm < 1e308) {
+      EXPECT_LE(certified::eigenvalue_error(eigenvalues_affinterp(S), lambda.value).upper(), 4e-15) << k;
+    }
+    if (truth.status == certified::Status::overflows) {
+      ++overflowing;
+      EXPECT_FALSE(exp_affinterp(S).allFinite()) << k;
+      EXPECT_FALSE(batched[k].allFinite()) << k;
+      continue;
+    }
+    const double bound = 2e-15 * std::max(1.0, norm) * truth.value.frobenius_norm().upper() + 0x1p-1072;
+    for (const Mat3& X : {exp_affinterp(S), batched[k]}) {
+      ASSERT_TRUE(X.allFinite()) << k;
+      EXPECT_LE(certified::absolute_error(X, truth.value).upper(), bound) << k;
+    }
+    for (const ExpAlgorithm& algorithm : exp_algorithms()) {
+      const certified::Ball error = certified::absolute_error(algorithm.exp(S), truth.value);
+      auto& [worst, non_finite] = peers[std::string(algorithm.name)];
+      if (!std::isfinite(error.mid)) ++non_finite;
+      else worst = std::max(worst, error.mid / bound);
+    }
+  }
+  std::printf("full-range: %zu matrices, %d with exp S overflowing\n", draws.size(), overflowing);
+  for (const auto& [name, result] : peers)
+    std::printf("%-28s full-range worst error / ours' bound %.2e, non-finite where exp S is finite: %d\n",
+                name.c_str(), result.first, result.second);
+  EXPECT_GT(overflowing, 0);
+  EXPECT_LT(overflowing, static_cast<int>(draws.size()));
+}
+#endif
 
 }  // namespace
 }  // namespace affinterp::sym3

@@ -15,6 +15,7 @@ Real50 relative_difference(const Mat3R50& A, const Mat3R50& B) { return (A - B).
 
 TEST(Sym3Reference, JacobiAndTaylorAgreeOnEveryFamily) {
   for (const Family& family : families()) {
+    if (family.whole_double_range) continue;  // beyond these references (families.hpp)
     for (const Mat3& S : family.draw(family, 3, 2)) {
       EXPECT_LT(relative_difference(reference_exp(S), reference_exp_taylor(S)), Real50("1e-45")) << family.name;
     }

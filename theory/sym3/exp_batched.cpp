@@ -32,6 +32,13 @@ namespace affinterp::sym3 {
       E(0, 0) = lanes[0][j], E(1, 1) = lanes[1][j], E(2, 2) = lanes[2][j];
       E(0, 1) = E(1, 0) = lanes[3][j], E(0, 2) = E(2, 0) = lanes[4][j], E(1, 2) = E(2, 1) = lanes[5][j];
     }
+    // Entries beyond kWideEntry: the split's range ends there (spectral_split.hpp); the scalar function
+    // takes those matrices to wide_range.
+    if (xsimd::any(split::max_abs(S) > Batch(split::kWideEntry))) {
+      for (std::size_t j = i; j < i + W; ++j)
+        if (in[j].triangularView<Eigen::Upper>().toDenseMatrix().cwiseAbs().maxCoeff() > split::kWideEntry)
+          out[j] = exp_affinterp(in[j]);
+    }
   }
   for (std::size_t i = full; i < in.size(); ++i) out[i] = exp_affinterp(in[i]);
 }

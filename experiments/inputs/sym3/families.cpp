@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -109,6 +110,81 @@ std::vector<Mat3> draw_zero(const Family&, std::uint64_t, std::size_t count) {
   return std::vector<Mat3>(count, Mat3::Zero());
 }
 
+/// ±(1 + m) 2^e with the sign, the 52-bit mantissa m and the exponent e in [lo, hi] drawn separately
+/// (rounded once, by ldexp, where 2^e is subnormal).
+double across_range(Rng& rng, int lo, int hi) {
+  const double mantissa = 1.0 + static_cast<double>(rng.bits() >> 12) * 0x1p-52;
+  const double sign = rng.integer(0, 1) ? -1.0 : 1.0;
+  return sign * std::ldexp(mantissa, static_cast<int>(rng.integer(lo, hi)));
+}
+
+/// The symmetric matrix of the six entries (xx, yy, zz, xy, xz, yz) with its coordinates permuted.
+Mat3 permuted(Rng& rng, const std::array<double, 6>& e) {
+  Mat3 S;
+  S << e[0], e[3], e[4], e[3], e[1], e[5], e[4], e[5], e[2];
+  std::array<int, 3> p{0, 1, 2};
+  for (int i = 2; i > 0; --i) std::swap(p[i], p[rng.integer(0, i)]);
+  Mat3 P;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) P(i, j) = S(p[i], p[j]);
+  return P;
+}
+
+/// One matrix of six kinds, drawn with equal probability: (0) tiny and subnormal entries, 2^e with e in
+/// [−1074, −30] and a spread of 60 binades within the matrix; (1) mixed scales: a diagonal entry
+/// −(1 + m) 2^e, e in [30, 1023], beside a 2×2 block with moderate diagonal and off-diagonal entries down
+/// to subnormal, coupled by entries of 2^[−1074, −500] or 0; (2) spectra whose largest eigenvalue is in
+/// [705, 711], around exp's overflow at 709.78 (the others in [−1000, λmax]), random basis; (3) the
+/// same in [−760, −700], where exp S is subnormal; (4) entries whose squares overflow with exp S finite:
+/// [[−a, ±ac], [±ac, −a]] with a = (1 + m) 2^e, e in [512, 1022], c in [0, 1] (c = 1: an exact zero
+/// eigenvalue beside −2a), and a moderate third diagonal entry; (5) all six entries with sign, mantissa
+/// and exponent in [−1074, 1023] drawn separately (exp S mostly overflows: the error must say so).
+Mat3 draw_across_range(Rng& rng) {
+  const auto kind = rng.integer(0, 5);
+  switch (kind) {
+    case 0: {
+      const int e = static_cast<int>(rng.integer(-1074, -30));
+      std::array<double, 6> entries;
+      for (double& x : entries) x = across_range(rng, e - 60, e);
+      return permuted(rng, entries);
+    }
+    case 1: {
+      const double huge = -std::abs(across_range(rng, 30, 1023));
+      const double coupling1 = rng.integer(0, 1) ? across_range(rng, -1074, -500) : 0.0;
+      const double coupling2 = rng.integer(0, 1) ? across_range(rng, -1074, -500) : 0.0;
+      return permuted(rng, {huge, rng.uniform(-5, 5), rng.uniform(-5, 5), coupling1, coupling2,
+                            across_range(rng, -1074, 2)});
+    }
+    case 2:
+    case 3: {
+      const bool high = kind == 2;
+      const double top = high ? rng.uniform(705, 711) : rng.uniform(-760, -700);
+      const double bottom = high ? -1000.0 : -800.0;
+      const Vec3 lambda(top, rng.uniform(bottom, top), rng.uniform(bottom, top));
+      return with_spectrum(lambda, random_rotation(rng));
+    }
+    case 4: {
+      const double a = std::abs(across_range(rng, 512, 1022));
+      const double c = static_cast<double>(rng.integer(0, 1 << 20)) * 0x1p-20;
+      const double off = (rng.integer(0, 1) ? -1.0 : 1.0) * (a * c);
+      return permuted(rng, {-a, -a, rng.uniform(-5, 5), off, 0.0, 0.0});
+    }
+    default: {
+      std::array<double, 6> entries;
+      for (double& x : entries) x = across_range(rng, -1074, 1023);
+      return permuted(rng, entries);
+    }
+  }
+}
+
+std::vector<Mat3> draw_full_range(const Family&, std::uint64_t seed, std::size_t count) {
+  Rng rng(seed);
+  std::vector<Mat3> out;
+  out.reserve(count);
+  for (std::size_t i = 0; i < count; ++i) out.push_back(draw_across_range(rng));
+  return out;
+}
+
 std::string gap_name(double gap) {
   if (gap == 0) return "0";
   std::ostringstream name;
@@ -171,6 +247,11 @@ const std::vector<Family>& families() {
     for (double gap : cluster_gaps())
       f.push_back({"triple-gap-" + gap_name(gap), "eigenvalues λ, λ + " + gap_name(gap) + ", λ + 2·" +
                    gap_name(gap) + ", in [0, 3], random basis", gap, true, draw_triple});
+    // Last, so that every family before it keeps its index (the claims seed each family by it).
+    f.push_back({"full-range",
+                 "the whole double range: subnormal and tiny entries, 10^±300 mixed scales, squares that overflow, "
+                 "λmax around exp's overflow (709.78) and underflow (−745), random sign/mantissa/exponent entries",
+                 {}, false, draw_full_range, true});
     return f;
   }();
   return all;

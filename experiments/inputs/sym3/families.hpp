@@ -37,6 +37,10 @@ struct Family {
   bool in_thesis_range = false;
   /// Draws `count` matrices of the family.
   std::vector<Mat3> (*draw)(const Family&, std::uint64_t seed, std::size_t count);
+  /// Entries and spectra across the whole double range: exp S may overflow (then the truth is "overflows")
+  /// and only the certified references (theory/certified) hold there; the 100-digit Boost references of
+  /// theory/sym3/reference.hpp lose moderate eigenvalues beside 10³⁰⁰ ones.
+  bool whole_double_range = false;
 };
 
 /// The gaps of the cluster families: decades 1e−1 … 1e−16, points around the thesis's 10⁻⁶
@@ -45,7 +49,7 @@ const std::vector<double>& cluster_gaps();
 
 /// Every family: the thesis distribution, spectra spread over [0, 3], clustered pairs and triples at
 /// every gap of cluster_gaps() (inside [0, 3]), wide spectra (ratio 10¹²), large |λ| (up to 700),
-/// diagonal, nearly diagonal, multiples of the identity, and zero.
+/// diagonal, nearly diagonal, multiples of the identity, zero, and last "full-range" (whole_double_range).
 const std::vector<Family>& families();
 
 }  // namespace affinterp::sym3
