@@ -43,8 +43,10 @@ void write_datablock(std::ostream& out, const std::string& name, const Table& ta
   for (const Row& row : table) {
     for (std::size_t i = 0; i < row.size(); ++i) {
       if (i) out << ' ';
-      if (std::isnan(row[i])) out << "NaN";
-      else out << row[i];
+      if (std::isnan(row[i]))
+        out << "NaN";
+      else
+        out << row[i];
     }
     out << '\n';
   }

@@ -22,7 +22,8 @@ std::vector<std::string> draw_overlay(const std::filesystem::path& stem, const E
       edges.push_back(row);
     }
     append(flipped, tables.flipped);
-    lo = lo.cwiseMin(frames[f].vertices.rowwise().minCoeff()), hi = hi.cwiseMax(frames[f].vertices.rowwise().maxCoeff());
+    lo = lo.cwiseMin(frames[f].vertices.rowwise().minCoeff()),
+    hi = hi.cwiseMax(frames[f].vertices.rowwise().maxCoeff());
   }
   Figure figure(stem);
   std::ostringstream plot;
@@ -33,7 +34,8 @@ std::vector<std::string> draw_overlay(const std::filesystem::path& stem, const E
   }
   for (std::size_t c = 0; c < curves.size(); ++c) {
     Table table;
-    for (Eigen::Index k = 0; k < curves[c].points.cols(); ++k) table.push_back({curves[c].points(0, k), curves[c].points(1, k)});
+    for (Eigen::Index k = 0; k < curves[c].points.cols(); ++k)
+      table.push_back({curves[c].points(0, k), curves[c].points(1, k)});
     const std::string name = "curve" + std::to_string(c);
     figure.data(name, table);
     plot << ", $" << name << " " << curves[c].style << " "
@@ -47,8 +49,8 @@ std::vector<std::string> draw_overlay(const std::filesystem::path& stem, const E
          << "set palette defined (0 '#c4d7ea', 1 '#1f3f66')\nset cbrange [0:1]\n"
          << "set key outside right top noenhanced\n";
   if (!title.empty()) script << "set title " << gnuplot_string(title) << " noenhanced\n";
-  script << "set xrange [" << lo.x() - margin.x() << ":" << hi.x() + margin.x() << "]\nset yrange [" << lo.y() - margin.y()
-         << ":" << hi.y() + margin.y() << "]\n"
+  script << "set xrange [" << lo.x() - margin.x() << ":" << hi.x() + margin.x() << "]\nset yrange ["
+         << lo.y() - margin.y() << ":" << hi.y() + margin.y() << "]\n"
          << plot.str() << "\n";
   return figure.size(900, 700).data("edges", edges).script(script.str()).render();
 }

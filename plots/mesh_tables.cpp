@@ -32,7 +32,8 @@ std::vector<std::pair<int, int>> edge_list(const Eigen::Matrix3Xi& triangles, bo
 
 void append(Table& table, const Table& more) { table.insert(table.end(), more.begin(), more.end()); }
 
-MeshTables mesh_tables(const Eigen::Matrix3Xi& triangles, const Eigen::Matrix2Xd& vertices, const Eigen::Vector2d& offset) {
+MeshTables mesh_tables(const Eigen::Matrix3Xi& triangles, const Eigen::Matrix2Xd& vertices,
+                       const Eigen::Vector2d& offset) {
   const bool detailed = triangles.cols() <= detailed_triangle_limit;
   const auto point = [&](int k) { return Row{vertices(0, k) + offset.x(), vertices(1, k) + offset.y()}; };
   MeshTables tables;

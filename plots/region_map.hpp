@@ -33,9 +33,9 @@ inline std::vector<std::string> draw_region_map(const std::filesystem::path& ste
       .data("map", table)
       .script("set title '" + title + "'\nset xlabel '" + x_label + "'\nset ylabel '" + y_label +
               "'\nset key outside right center vertical box opaque\nset grid front\n"
-              "plot " + layer(0, "#b8dcb0", "condition and property hold") + ", \\\n  " +
-              layer(1, "#e6e6e6", "neither holds") + ", \\\n  " +
-              layer(2, "#d7191c", "condition holds, property fails") + ", \\\n  " +
+              "plot " +
+              layer(0, "#b8dcb0", "condition and property hold") + ", \\\n  " + layer(1, "#e6e6e6", "neither holds") +
+              ", \\\n  " + layer(2, "#d7191c", "condition holds, property fails") + ", \\\n  " +
               layer(3, "#2c7bb6", "property holds, condition fails") + "\n")
       .render();
 }

@@ -1,13 +1,13 @@
 #pragma once
 // Running the affinterp executable from a test: its exit status and standard error; scratch folders and
 // text files around it.
+#include <sys/wait.h>
+#include <unistd.h>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace affinterp::checks {
 
@@ -48,8 +48,6 @@ inline std::string read_text(const std::filesystem::path& file) {
 }
 
 /// True when `text` is exactly one line.
-inline bool one_line(const std::string& text) {
-  return !text.empty() && text.find('\n') == text.size() - 1;
-}
+inline bool one_line(const std::string& text) { return !text.empty() && text.find('\n') == text.size() - 1; }
 
 }  // namespace affinterp::checks

@@ -39,7 +39,8 @@ void expect_frames(const fs::path& out, const fs::path& source, int frames, doub
     const global::Mesh read = io::read_mesh(out / frame["file"].get<std::string>());
     EXPECT_EQ(read.vertex_count(), mesh.vertex_count());
     EXPECT_EQ(read.triangles.cols(), mesh.triangles.cols());
-    for (const char* key : {"flipped_triangles", "min_det", "max_det", "max_distortion", "mean_distortion", "area_ratio"})
+    for (const char* key :
+         {"flipped_triangles", "min_det", "max_det", "max_distortion", "mean_distortion", "area_ratio"})
       EXPECT_TRUE(frame.contains(key)) << key;
   }
   EXPECT_FALSE(fs::exists(out / ("frame_" + std::to_string(10000 + frames).substr(1) + ".obj"))) << "no stale frames";
@@ -62,8 +63,9 @@ TEST(InterpolateCli, RunsOnEveryGeneratedShape) {
     SCOPED_TRACE(info.name);
     const fs::path folder = scratch("generated") / info.name;
     ASSERT_EQ(run_cli("shapes " + info.name + " --out " + folder.string()).status, 0);
-    const auto result = run_cli("interpolate --source " + (folder / "source.obj").string() + " --target " +
-                                (folder / "target.obj").string() + " --frames 5 --no-figures --out " + (folder / "out").string());
+    const auto result =
+        run_cli("interpolate --source " + (folder / "source.obj").string() + " --target " +
+                (folder / "target.obj").string() + " --frames 5 --no-figures --out " + (folder / "out").string());
     ASSERT_EQ(result.status, 0) << result.error;
     expect_frames(folder / "out", folder / "source.obj", 5);
   }
@@ -73,8 +75,9 @@ TEST(InterpolateCli, DrawsAFilmstripAnAnimationAndAViewer) {
   const fs::path folder = scratch("figures");
   ASSERT_EQ(run_cli("shapes man-wave --out " + folder.string()).status, 0);
   const fs::path out = folder / "out";
-  const auto result = run_cli("interpolate --source " + (folder / "source.obj").string() + " --target " +
-                              (folder / "target.obj").string() + " --frames 6 --time-range -0.25:1.25 --out " + out.string());
+  const auto result =
+      run_cli("interpolate --source " + (folder / "source.obj").string() + " --target " +
+              (folder / "target.obj").string() + " --frames 6 --time-range -0.25:1.25 --out " + out.string());
   ASSERT_EQ(result.status, 0) << result.error;
   expect_frames(out, folder / "source.obj", 6, -0.25, 1.25);
   EXPECT_GT(fs::file_size(out / "filmstrip.png"), 1000u);
@@ -95,9 +98,11 @@ TEST(InterpolateCli, DrawsAFilmstripAnAnimationAndAViewer) {
 TEST(ViewCli, ComparesRunsAndRefusesWhatIsNotARun) {
   const fs::path folder = scratch("view");
   ASSERT_EQ(run_cli("shapes man-wave --out " + folder.string()).status, 0);
-  const std::string io = " --source " + (folder / "source.obj").string() + " --target " + (folder / "target.obj").string();
+  const std::string io =
+      " --source " + (folder / "source.obj").string() + " --target " + (folder / "target.obj").string();
   ASSERT_EQ(run_cli("interpolate" + io + " --frames 4 --no-figures --out " + (folder / "a").string()).status, 0);
-  ASSERT_EQ(run_cli("interpolate" + io + " --frames 5 --energy F --no-figures --out " + (folder / "b").string()).status, 0);
+  ASSERT_EQ(run_cli("interpolate" + io + " --frames 5 --energy F --no-figures --out " + (folder / "b").string()).status,
+            0);
   const auto result = run_cli("view " + (folder / "a").string() + " " + (folder / "b").string() + " -o " +
                               (folder / "compare.html").string());
   ASSERT_EQ(result.status, 0) << result.error;
@@ -119,7 +124,8 @@ TEST(ViewCli, ComparesRunsAndRefusesWhatIsNotARun) {
     EXPECT_EQ(read_text(folder / "compare.html"), "earlier\n");
   }
   std::size_t files = 0;
-  for (const auto& entry : fs::directory_iterator(folder)) files += entry.path().filename().string().find(".partial-") != std::string::npos;
+  for (const auto& entry : fs::directory_iterator(folder))
+    files += entry.path().filename().string().find(".partial-") != std::string::npos;
   EXPECT_EQ(files, 0u) << "no partial page left";
 }
 
@@ -130,13 +136,15 @@ TEST(InterpolateCli, AcceptsEveryOptionFamily) {
   std::string weights;
   for (Eigen::Index i = 0; i < source.triangle_count(); ++i) weights += std::to_string(i % 2) + "\n";
   write_text(folder / "weights.txt", weights);
-  const std::string io = " --source " + (folder / "source.obj").string() + " --target " + (folder / "target.obj").string() +
-                         " --frames 3 --no-figures --out " + (folder / "out").string();
-  for (const std::string& options : std::vector<std::string>{"--local polar --energy F --no-area-weights --pin 0 --pin 3@10", "--local svd --energy S --symmetric",
-        "--local linear --energy blend --weights " + (folder / "weights.txt").string(),
-        "--energy blend --blend-weight 0.2 --rotation-branch principal",
-        "--locus '1@5:0,0;0.5,2;1,1' --edge-direction 0:1 --edge-direction 1:2:linear@3 --barycentre-locus none",
-        "--barycentre-locus '0,0;1,1;2,0@2'"}) {
+  const std::string io = " --source " + (folder / "source.obj").string() + " --target " +
+                         (folder / "target.obj").string() + " --frames 3 --no-figures --out " +
+                         (folder / "out").string();
+  for (const std::string& options : std::vector<std::string>{
+           "--local polar --energy F --no-area-weights --pin 0 --pin 3@10", "--local svd --energy S --symmetric",
+           "--local linear --energy blend --weights " + (folder / "weights.txt").string(),
+           "--energy blend --blend-weight 0.2 --rotation-branch principal",
+           "--locus '1@5:0,0;0.5,2;1,1' --edge-direction 0:1 --edge-direction 1:2:linear@3 --barycentre-locus none",
+           "--barycentre-locus '0,0;1,1;2,0@2'"}) {
     const auto result = run_cli("interpolate " + options + io);
     EXPECT_EQ(result.status, 0) << options << ": " << result.error;
   }
@@ -211,11 +219,12 @@ TEST(InterpolateCli, RefusesBadInputsLeavingOutUntouched) {
   expect_refused(pair("s.obj", "t.obj") + " --barycentre-locus 'x'", 2, "--barycentre-locus 'x'");
   expect_refused(pair("s.obj", "t.obj") + " --time-range 1:0", 2, "--time-range '1:0'");
   expect_refused(pair("s.obj", "t.obj") + " --local slerp", 2, "--local");
-  expect_refused(pair("s.obj", "t.obj") + " --energy blend --weights " + (d / "w.txt").string(), 1, "1 weights for 2 triangles");
+  expect_refused(pair("s.obj", "t.obj") + " --energy blend --weights " + (d / "w.txt").string(), 1,
+                 "1 weights for 2 triangles");
   expect_refused(pair("s.obj", "t.obj") + " --frames 1", 2, "--frames");
   // A flipped target is accepted when allowed (and reported).
-  const auto allowed = run_cli("interpolate " + pair("s.obj", "flipped.obj") + " --allow-flipped-target --no-figures --frames 3 --out " +
-                               (d / "allowed").string());
+  const auto allowed = run_cli("interpolate " + pair("s.obj", "flipped.obj") +
+                               " --allow-flipped-target --no-figures --frames 3 --out " + (d / "allowed").string());
   EXPECT_NE(allowed.error.find("flipped"), std::string::npos) << allowed.error;
 }
 
@@ -246,8 +255,9 @@ TEST(InterpolateCli, RunsOnTheSharedMeshes) {
   for (const char* name : {"arm.obj", "worm.obj", "octopus.obj"}) {
     const fs::path folder = scratch(std::string("shared_") + name);
     io::write_obj(bent(io::read_mesh(*shared / name)), folder / "bent.obj");
-    const auto result = run_cli("interpolate --source " + (*shared / name).string() + " --target " +
-                                (folder / "bent.obj").string() + " --frames 3 --no-figures --out " + (folder / "out").string());
+    const auto result =
+        run_cli("interpolate --source " + (*shared / name).string() + " --target " + (folder / "bent.obj").string() +
+                " --frames 3 --no-figures --out " + (folder / "out").string());
     ASSERT_EQ(result.status, 0) << name << ": " << result.error;
     expect_frames(folder / "out", *shared / name, 3);
   }

@@ -2,8 +2,8 @@
 // the eigenvalues, S^t and log S contain the 100-digit Boost references (theory/sym3/reference.hpp), their
 // radii are as small as the target, they certify the error of ours, and on the whole-double-range family
 // every result is decided (certified or overflowing) and agrees with Arb's arb_mat_exp where both apply.
-#include "checks/certified/helpers.hpp"
 #include "experiments/inputs/sym3/families.hpp"
+#include "checks/certified/helpers.hpp"
 #include "theory/linalg/symmetric.hpp"
 #include "theory/sym3/affinterp.hpp"
 
@@ -59,7 +59,8 @@ TEST(CertifiedFamilies, BallsContainTheBoostReferencesWithTinyRadii) {
       const CertifiedEigenvalues l = certified::eigenvalues(S);
       ASSERT_EQ(l.status, Status::certified) << family.name;
       const sym3::ReferenceEigen reference = sym3::reference_eigen(sym3::to_real100(S));
-      const Real100 scale = std::max({Real100(1), Real100(abs(reference.lambda(2))), Real100(abs(reference.lambda(0)))});
+      const Real100 scale =
+          std::max({Real100(1), Real100(abs(reference.lambda(2))), Real100(abs(reference.lambda(0)))});
       for (int k = 0; k < 3; ++k)
         EXPECT_TRUE(contains(l.value, k, 0, reference.lambda(k), Real100("1e-90") * scale)) << family.name << " " << k;
 

@@ -27,10 +27,14 @@ inline bool contains(const Balls& balls, const sym3::Mat3R100& E, const Real100&
 
 inline const char* name(Status status) {
   switch (status) {
-    case Status::certified: return "certified";
-    case Status::overflows: return "overflows";
-    case Status::not_spd: return "not_spd";
-    case Status::too_wide: return "too_wide";
+    case Status::certified:
+      return "certified";
+    case Status::overflows:
+      return "overflows";
+    case Status::not_spd:
+      return "not_spd";
+    case Status::too_wide:
+      return "too_wide";
   }
   return "?";
 }

@@ -13,9 +13,9 @@
 namespace affinterp::certified {
 namespace {
 
+using sym3::Mat3R100;
 using testing::contains;
 using testing::Real100;
-using sym3::Mat3R100;
 
 /// Relative radius every certified result must reach by default (Options::relative_radius = 2⁻¹¹⁰).
 constexpr double kTarget = 0x1p-110;
@@ -71,7 +71,8 @@ TEST(CertifiedSym3, MultiplesOfTheIdentity) {
     const CertifiedMatrix e = certified::exp(S);
     ASSERT_EQ(e.status, Status::certified) << lambda;
     if (lambda < -1e5) {  // e^λ far below the smallest subnormal
-      for (int i = 0; i < 3; ++i) EXPECT_TRUE(e.value.entry(i, i).lower() <= 0 && e.value.entry(i, i).upper() <= 1e-323);
+      for (int i = 0; i < 3; ++i)
+        EXPECT_TRUE(e.value.entry(i, i).lower() <= 0 && e.value.entry(i, i).upper() <= 1e-323);
     } else {
       const Real100 expected = exp(Real100(lambda));
       const Mat3R100 E = expected * Mat3R100::Identity();
@@ -92,7 +93,7 @@ Eigen::Matrix3i rotation_times_25() {
   const int w = 1, x = 2, y = 2, z = 4;
   Eigen::Matrix3i R;
   R << w * w + x * x - y * y - z * z, 2 * (x * y - w * z), 2 * (x * z + w * y),  //
-      2 * (x * y + w * z), w * w - x * x + y * y - z * z, 2 * (y * z - w * x),    //
+      2 * (x * y + w * z), w * w - x * x + y * y - z * z, 2 * (y * z - w * x),   //
       2 * (x * z - w * y), 2 * (y * z + w * x), w * w - x * x - y * y + z * z;
   return R;
 }
@@ -102,7 +103,8 @@ Mat3 rotated(const std::array<double, 3>& mu) {
   const Eigen::Matrix3d Rt = rotation_times_25().cast<double>();
   Mat3 S;
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) S(i, j) = mu[0] * Rt(i, 0) * Rt(j, 0) + mu[1] * Rt(i, 1) * Rt(j, 1) + mu[2] * Rt(i, 2) * Rt(j, 2);
+    for (int j = 0; j < 3; ++j)
+      S(i, j) = mu[0] * Rt(i, 0) * Rt(j, 0) + mu[1] * Rt(i, 1) * Rt(j, 1) + mu[2] * Rt(i, 2) * Rt(j, 2);
   return S;
 }
 
@@ -121,9 +123,9 @@ TEST(CertifiedSym3, ExactRationalRotationsOfKnownSpectra) {
   ASSERT_EQ(rotation_times_25() * rotation_times_25().transpose(), 625 * Eigen::Matrix3i::Identity());
   // Distinct, a repeated pair, a triple (λI in a rotated basis), and a pair 625·2⁻⁴⁰ apart.
   const std::array<std::array<double, 3>, 4> spectra{{{1.0 / 256, 2.0 / 256, -3.0 / 256},
-                                                       {1.0 / 256, 1.0 / 256, -3.0 / 256},
-                                                       {5.0 / 256, 5.0 / 256, 5.0 / 256},
-                                                       {1.0 / 256, 1.0 / 256 + 0x1p-40, 3.0 / 256}}};
+                                                      {1.0 / 256, 1.0 / 256, -3.0 / 256},
+                                                      {5.0 / 256, 5.0 / 256, 5.0 / 256},
+                                                      {1.0 / 256, 1.0 / 256 + 0x1p-40, 3.0 / 256}}};
   for (const auto& mu : spectra) {
     const Mat3 S = rotated(mu);
     const CertifiedEigenvalues l = certified::eigenvalues(S);
@@ -171,7 +173,7 @@ TEST(CertifiedSym3, PositiveDefinitenessIsDecidedExactly) {
 }
 
 TEST(CertifiedSym3, OverflowOfExpIsDecided) {
-  EXPECT_EQ(certified::exp(diagonal(710, 0, 0)).status, Status::overflows);   // e^710 > DBL_MAX
+  EXPECT_EQ(certified::exp(diagonal(710, 0, 0)).status, Status::overflows);  // e^710 > DBL_MAX
   EXPECT_EQ(certified::exp(diagonal(1e300, 0, 0)).status, Status::overflows);
   EXPECT_EQ(certified::exp(diagonal(-1e300, 1, 2)).status, Status::certified);
   // λ = 710.5 on the eigenvector (3, 4, 0)/5: entries 0.36, 0.48 and 0.64 times e^710.5 ≈ 3.7·10³⁰⁸;

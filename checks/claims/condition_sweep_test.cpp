@@ -75,7 +75,8 @@ TEST(ConditionSweep, PrintedThm225AgreesAndIsThreadIndependent) {
 
 TEST(ConditionSweep, KeepsTheSimplestDisagreement) {
   const std::vector<Case> cases{{3, 3, 1}, {Rational(1) / 2, 1, 0}, {2, 2, 0}};
-  const auto tally = compare_over(cases, 2, [](const Case&) { return true; }, [](const Case&) { return false; }, cost);
+  const auto tally = compare_over(
+      cases, 2, [](const Case&) { return true; }, [](const Case&) { return false; }, cost);
   EXPECT_EQ(tally.condition_only.count, 3u);
   EXPECT_EQ(std::get<0>(*tally.condition_only.simplest), Rational(1) / 2);  // height 2 + 1 + 1
 }

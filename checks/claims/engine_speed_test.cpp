@@ -26,15 +26,16 @@ nlohmann::json median(const std::string& name, double ms, double triangles = 0) 
 
 fs::path write_bench(const nlohmann::json& benchmarks) {
   const fs::path file = fs::temp_directory_path() / "affinterp_engine_speed_test.json";
-  std::ofstream(file) << nlohmann::json{{"context", {{"affinterp_cpu", "test cpu"}}}, {"benchmarks", benchmarks}}.dump();
+  std::ofstream(file)
+      << nlohmann::json{{"context", {{"affinterp_cpu", "test cpu"}}}, {"benchmarks", benchmarks}}.dump();
   return file;
 }
 
 TEST(EngineSpeed, JudgesEachEnergyAgainstItsTargets) {
-  const fs::path file = write_bench({median("setup/F/mesh", 120, 1000), median("frame/F/mesh", 5.0),
-                                     median("frame_refactor/F/mesh", 100), median("setup/R/mesh", 250, 1000),
-                                     median("frame/R/mesh", 50.0), median("setup/S/mesh", 90, 1000),
-                                     median("frame/S/mesh", 60.0)});
+  const fs::path file =
+      write_bench({median("setup/F/mesh", 120, 1000), median("frame/F/mesh", 5.0), median("frame_refactor/F/mesh", 100),
+                   median("setup/R/mesh", 250, 1000), median("frame/R/mesh", 50.0), median("setup/S/mesh", 90, 1000),
+                   median("frame/S/mesh", 60.0)});
   const nlohmann::json table = engine_speed(file);
   fs::remove(file);
   ASSERT_EQ(table["rows"].size(), 3u);
@@ -52,9 +53,8 @@ TEST(EngineSpeed, JudgesEachEnergyAgainstItsTargets) {
   EXPECT_TRUE(S["target_frames_per_s"].is_null());
   EXPECT_TRUE(S["met"].get<bool>());
 
-  const std::string md = report::render_markdown({{"claims", nlohmann::json::array()},
-                                                  {"environment", nlohmann::json::object()},
-                                                  {"engine_speed", table}});
+  const std::string md = report::render_markdown(
+      {{"claims", nlohmann::json::array()}, {"environment", nlohmann::json::object()}, {"engine_speed", table}});
   EXPECT_NE(md.find("| F | 120.0 | 5.00 | 200.0 | 150 | 100.0 | 20.0 | yes |"), std::string::npos) << md;
   EXPECT_NE(md.find("| R | 250.0 | 50.00 | 20.0 | 25 | — | — | **no** |"), std::string::npos) << md;
 }

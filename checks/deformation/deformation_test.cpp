@@ -5,8 +5,8 @@
 #include "experiments/inputs/sym3/pose.hpp"
 #include "theory/linalg/symmetric.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <filesystem>
@@ -81,9 +81,7 @@ TEST(ReadOff, ReadsPolygonsAsTriangleFansAndRejectsGarbage) {
   const Mesh3 quad = read_off(dir / "affinterp_quad.off");
   EXPECT_EQ(quad.vertex_count(), 4);
   EXPECT_EQ(quad.triangle_count(), 2);
-  {
-    std::ofstream(dir / "affinterp_bad.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n";
-  }
+  { std::ofstream(dir / "affinterp_bad.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"; }
   EXPECT_THROW(read_off(dir / "affinterp_bad.off"), std::runtime_error);
   EXPECT_THROW(read_off(dir / "affinterp_missing.off"), std::runtime_error);
 }

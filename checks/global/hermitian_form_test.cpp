@@ -1,8 +1,8 @@
 // The complex form of the local errors (theory/global/hermitian_form.hpp, hermitian_local_error.hpp):
 // each real 6×6 form of local_error.hpp commutes with rotating all three vertices by π/2, exactly (in
 // rationals); and the complex forms the solver assembles are those real forms read as Hermitian blocks.
-#include "theory/exact/rational.hpp"
 #include "theory/global/hermitian_form.hpp"
+#include "theory/exact/rational.hpp"
 #include "theory/global/hermitian_local_error.hpp"
 #include "theory/global/local_error.hpp"
 
@@ -56,16 +56,16 @@ RC_GTEST_PROP(HermitianForm, EveryLocalErrorCommutesWithAQuarterTurnExactly, ())
 
 RC_GTEST_PROP(HermitianForm, SolverFormsAreTheRealFormsAsHermitianBlocks, ()) {
   const Corners<double> p = to_double(rational_matrix<2, 3>());
-  RC_PRE(std::abs((p.col(1) - p.col(0)).x() * (p.col(2) - p.col(0)).y() - (p.col(1) - p.col(0)).y() * (p.col(2) - p.col(0)).x()) > 0.1);
+  RC_PRE(std::abs((p.col(1) - p.col(0)).x() * (p.col(2) - p.col(0)).y() -
+                  (p.col(1) - p.col(0)).y() * (p.col(2) - p.col(0)).x()) > 0.1);
   const Eigen::Matrix2d A = to_double(rational_matrix<2, 2>());
   RC_PRE(std::abs(A.determinant()) > 0.1);
   const auto D = linear_part_operator(p);
   const double w = *rc::gen::inRange(0, 5) / 4.0;
-  const std::pair<Energy, TriangleQuadratic<double>> cases[] = {
-      {Energy::frobenius, frobenius_quadratic(D, A)},
-      {Energy::similarity, similarity_quadratic(D, A)},
-      {Energy::blend, blend_quadratic(D, A, w)},
-      {Energy::procrustes, procrustes_quadratic(p, A)}};
+  const std::pair<Energy, TriangleQuadratic<double>> cases[] = {{Energy::frobenius, frobenius_quadratic(D, A)},
+                                                                {Energy::similarity, similarity_quadratic(D, A)},
+                                                                {Energy::blend, blend_quadratic(D, A, w)},
+                                                                {Energy::procrustes, procrustes_quadratic(p, A)}};
   for (const auto& [energy, real] : cases) {
     const HermitianTriangleForm form = hermitian_local_error(energy, D, p, A, w);
     const double scale = 1 + real.H.cwiseAbs().maxCoeff();

@@ -1,7 +1,7 @@
 // The global interpolation engine (Kaji §4) against a dense reference solve, its end points, the rotation
 // branch choice and its refusals.
-#include "checks/global/strip.hpp"
 #include "theory/global/interpolation.hpp"
+#include "checks/global/strip.hpp"
 #include "theory/global/local_paths.hpp"
 
 #include <gtest/gtest.h>
@@ -124,7 +124,8 @@ TEST(Interpolation, VerticesAtIsSafeToCallConcurrently) {
   for (int k = 0; k < frames; ++k) alone.push_back(interpolation.vertices_at(k / (frames - 1.0)));
   std::vector<std::thread> threads;
   for (int k = 0; k < frames; ++k)
-    threads.emplace_back([&, k] { together[static_cast<std::size_t>(k)] = interpolation.vertices_at(k / (frames - 1.0)); });
+    threads.emplace_back(
+        [&, k] { together[static_cast<std::size_t>(k)] = interpolation.vertices_at(k / (frames - 1.0)); });
   for (std::thread& thread : threads) thread.join();
   for (std::size_t k = 0; k < frames; ++k) EXPECT_TRUE(alone[k] == together[k]) << "frame " << k;
 }
@@ -152,16 +153,19 @@ namespace {
 
 TEST(LocalPaths, ExpMatchesTheLocalTheorysHomotopyOnEveryBranch) {
   const std::vector<Eigen::Matrix2d> A = {(Eigen::Matrix2d() << 2, 1, -0.5, 0.7).finished(),
-                                          (Eigen::Matrix2d() << -1, -0.2, 0.3, -2).finished(), Eigen::Matrix2d::Identity()};
+                                          (Eigen::Matrix2d() << -1, -0.2, 0.3, -2).finished(),
+                                          Eigen::Matrix2d::Identity()};
   for (const double k : {-1.0, 0.0, 2.0}) {
     Eigen::VectorXd theta(3);
-    for (int i = 0; i < 3; ++i) theta[i] = principal_polar_angle(A[static_cast<std::size_t>(i)]) + 2 * std::numbers::pi * k;
+    for (int i = 0; i < 3; ++i)
+      theta[i] = principal_polar_angle(A[static_cast<std::size_t>(i)]) + 2 * std::numbers::pi * k;
     const LocalPaths paths(A, LocalHomotopy::exp, theta);
     for (int i = 0; i < 3; ++i) {
       const local::Polar<double> polar = local::polar_decomposition<double>(A[static_cast<std::size_t>(i)]);
       const local::ExpLogHomotopy<double> reference(theta[i], polar.S);
       for (const double t : {-0.5, 0.0, 0.3, 1.0, 1.7})
-        EXPECT_LT((paths.at(i, t) - reference(t)).cwiseAbs().maxCoeff(), 1e-12) << "i " << i << " t " << t << " k " << k;
+        EXPECT_LT((paths.at(i, t) - reference(t)).cwiseAbs().maxCoeff(), 1e-12)
+            << "i " << i << " t " << t << " k " << k;
     }
   }
 }

@@ -12,12 +12,9 @@ namespace affinterp::global::testing {
 inline Mesh unit_square() {
   Mesh mesh;
   mesh.vertices.resize(2, 4);
-  mesh.vertices << 0, 1, 1, 0,
-                   0, 0, 1, 1;
+  mesh.vertices << 0, 1, 1, 0, 0, 0, 1, 1;
   mesh.triangles.resize(3, 2);
-  mesh.triangles << 0, 0,
-                    1, 2,
-                    2, 3;
+  mesh.triangles << 0, 0, 1, 2, 2, 3;
   return mesh;
 }
 

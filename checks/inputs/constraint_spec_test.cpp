@@ -25,8 +25,10 @@ TEST(ConstraintSpec, PinAndWeight) {
   EXPECT_EQ(io::parse_pin("12").vertex, 12);
   EXPECT_EQ(io::parse_pin("12").weight, 1.0);
   EXPECT_EQ(io::parse_pin("3@2.5").weight, 2.5);
-  EXPECT_EQ(refusal([](const std::string& s) { io::parse_pin(s); }, "-1"), "--pin '-1': '-1' is not a vertex index (0, 1, 2, ...)");
-  EXPECT_EQ(refusal([](const std::string& s) { io::parse_pin(s); }, "3@0"), "--pin '3@0': the weight after '@' must be a positive number");
+  EXPECT_EQ(refusal([](const std::string& s) { io::parse_pin(s); }, "-1"),
+            "--pin '-1': '-1' is not a vertex index (0, 1, 2, ...)");
+  EXPECT_EQ(refusal([](const std::string& s) { io::parse_pin(s); }, "3@0"),
+            "--pin '3@0': the weight after '@' must be a positive number");
 }
 
 TEST(ConstraintSpec, LocusThroughPoints) {
@@ -35,9 +37,12 @@ TEST(ConstraintSpec, LocusThroughPoints) {
   EXPECT_EQ(locus.weight, 4.0);
   ASSERT_EQ(locus.points.cols(), 3);
   EXPECT_EQ(locus.points.col(1), Eigen::Vector2d(1.5, -2));
-  EXPECT_EQ(refusal([](const std::string& s) { io::parse_locus(s); }, "7"), "--locus '7': expected 'V[@C]:x1,y1;x2,y2;...'");
-  EXPECT_EQ(refusal([](const std::string& s) { io::parse_locus(s); }, "7:0,0;1"), "--locus '7:0,0;1': '1' is not a point 'x,y'");
-  EXPECT_EQ(refusal([](const std::string& s) { io::parse_locus(s); }, "7:0,0;nan,1"), "--locus '7:0,0;nan,1': 'nan,1' is not a point 'x,y'");
+  EXPECT_EQ(refusal([](const std::string& s) { io::parse_locus(s); }, "7"),
+            "--locus '7': expected 'V[@C]:x1,y1;x2,y2;...'");
+  EXPECT_EQ(refusal([](const std::string& s) { io::parse_locus(s); }, "7:0,0;1"),
+            "--locus '7:0,0;1': '1' is not a point 'x,y'");
+  EXPECT_EQ(refusal([](const std::string& s) { io::parse_locus(s); }, "7:0,0;nan,1"),
+            "--locus '7:0,0;nan,1': 'nan,1' is not a point 'x,y'");
 }
 
 TEST(ConstraintSpec, EdgeDirectionAndPath) {

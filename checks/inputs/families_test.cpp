@@ -2,8 +2,8 @@
 // seed, symmetric, with the spectra they promise.
 #include "experiments/inputs/sym3/families.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
@@ -35,7 +35,8 @@ TEST(Families, HaveThePromisedSpectra) {
         // The clustered eigenvalues keep their gap up to rounding.
         double best = INFINITY;
         for (int i = 0; i < 3; ++i)
-          for (int j = i + 1; j < 3; ++j) best = std::min(best, std::abs(std::abs(lambda[i] - lambda[j]) - *family.gap));
+          for (int j = i + 1; j < 3; ++j)
+            best = std::min(best, std::abs(std::abs(lambda[i] - lambda[j]) - *family.gap));
         EXPECT_LT(best, 1e-3 * *family.gap + slack) << family.name;
       }
     }

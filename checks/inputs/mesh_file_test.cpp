@@ -1,7 +1,7 @@
 // Reading and writing OBJ/OFF meshes: the accepted subset, and a one-line error naming the file and the
 // line for each kind of bad input.
-#include "checks/inputs/shared_meshes.hpp"
 #include "experiments/inputs/mesh_file.hpp"
+#include "checks/inputs/shared_meshes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -46,7 +46,8 @@ TEST(ObjReader, RefusesWhatItCannotRepresentNamingTheLine) {
             "in.obj:5: face with 4 vertices: only triangles are read (polygons are not triangulated)");
   EXPECT_EQ(obj_error("v 0 0\nv 1 0\nv 1 1\nf 1 2 4\n"), "in.obj:4: vertex index 4 is out of range (3 vertices)");
   EXPECT_EQ(obj_error("v 0 0\nf -2 1 1\n"), "in.obj:2: vertex index -2 is out of range (1 vertices)");
-  EXPECT_EQ(obj_error("v 0 0\nf 0 1 1\n"), "in.obj:2: vertex index 0: OBJ indices start at 1 (negative ones count back)");
+  EXPECT_EQ(obj_error("v 0 0\nf 0 1 1\n"),
+            "in.obj:2: vertex index 0: OBJ indices start at 1 (negative ones count back)");
   EXPECT_EQ(obj_error("v 0 zero\n"), "in.obj:1: 'zero' is not a number");
   EXPECT_EQ(obj_error("v 0\n"), "in.obj:1: expected 'v x y [z]'");
   EXPECT_EQ(obj_error("l 1 2\n"), "in.obj:1: unsupported statement 'l'");
@@ -55,7 +56,8 @@ TEST(ObjReader, RefusesWhatItCannotRepresentNamingTheLine) {
 }
 
 TEST(OffReader, ReadsHeaderCountsVerticesAndFaces) {
-  const global::Mesh mesh = io::parse_off("OFF\n# comment\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3 255 0 0\n", "sq.off");
+  const global::Mesh mesh =
+      io::parse_off("OFF\n# comment\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3 255 0 0\n", "sq.off");
   EXPECT_EQ(mesh.vertex_count(), 4);
   EXPECT_EQ(mesh.triangles.col(1), Eigen::Vector3i(0, 2, 3));
   EXPECT_EQ(io::parse_off("OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "x").triangle_count(), 1);
@@ -69,9 +71,12 @@ TEST(OffReader, RefusesBadFilesNamingTheLine) {
   EXPECT_EQ(off_error("OFF\n-1 1 0\n"), "in.obj:2: negative count");
   EXPECT_EQ(off_error("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2 2\n"),
             "in.obj:6: face 0 has 4 vertices: only triangles are read (polygons are not triangulated)");
-  EXPECT_EQ(off_error("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n"), "in.obj:6: face 0: vertex index 3 is out of range (3 vertices)");
-  EXPECT_EQ(off_error("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\nextra\n"), "in.obj:7: unexpected content after the last face");
-  EXPECT_EQ(off_error("OFF\n1 0 0\n0 0 1e-300\n"), "in.obj:3: z = 1e-300 is not 0: only planar meshes (z = 0) are read");
+  EXPECT_EQ(off_error("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n"),
+            "in.obj:6: face 0: vertex index 3 is out of range (3 vertices)");
+  EXPECT_EQ(off_error("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\nextra\n"),
+            "in.obj:7: unexpected content after the last face");
+  EXPECT_EQ(off_error("OFF\n1 0 0\n0 0 1e-300\n"),
+            "in.obj:3: z = 1e-300 is not 0: only planar meshes (z = 0) are read");
 }
 
 TEST(MeshFile, WritesObjThatReadsBackExactly) {

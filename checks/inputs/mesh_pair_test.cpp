@@ -1,7 +1,7 @@
 // Checking a source/target pair (theory/global/mesh_validation via io::check_mesh_pair): each kind of
 // invalid pair gives one line naming the file and the element.
-#include "experiments/inputs/mesh_file.hpp"
 #include "experiments/inputs/mesh_pair.hpp"
+#include "experiments/inputs/mesh_file.hpp"
 #include "theory/global/mesh_validation.hpp"
 
 #include "checks/global/strip.hpp"
@@ -40,7 +40,8 @@ TEST(MeshPair, RefusesIncompatibleOrMalformedMeshesNamingTheElement) {
   EXPECT_EQ(pair_error(unit_square(), fewer), "t.obj: the target has 3 vertices, the source 4");
   global::Mesh other = unit_square();
   other.triangles(2, 1) = 1;
-  EXPECT_EQ(pair_error(unit_square(), other), "t.obj: triangle 1 differs between source and target: the face lists must match");
+  EXPECT_EQ(pair_error(unit_square(), other),
+            "t.obj: triangle 1 differs between source and target: the face lists must match");
   global::Mesh out_of_range = unit_square();
   out_of_range.triangles(1, 0) = 7;
   EXPECT_EQ(pair_error(out_of_range, unit_square()), "s.obj: triangle 0 refers to vertex 7 of 4");
@@ -63,7 +64,8 @@ TEST(MeshPair, RefusesZeroAreaAndFoldedSources) {
   global::Mesh folded = unit_square();
   folded.vertices.col(3) = Eigen::Vector2d(2, -1);  // triangle 1 turns clockwise
   EXPECT_EQ(pair_error(folded, folded),
-            "s.obj: source triangles 0 (counter-clockwise) and 1 (clockwise) have opposite orientations: the source folds over itself");
+            "s.obj: source triangles 0 (counter-clockwise) and 1 (clockwise) have opposite orientations: the source "
+            "folds over itself");
 }
 
 TEST(MeshPair, ReorientsAClockwiseSourceAndItsTarget) {
@@ -82,7 +84,8 @@ TEST(MeshPair, FlippedTargetTrianglesAreRefusedUnlessAllowed) {
   global::Mesh mirrored = unit_square();
   mirrored.vertices.row(0) *= -1;
   EXPECT_EQ(pair_error(unit_square(), mirrored),
-            "t.obj: 2 target triangle(s) flipped or collapsed relative to the source, first triangle 0 (allow with --allow-flipped-target)");
+            "t.obj: 2 target triangle(s) flipped or collapsed relative to the source, first triangle 0 (allow with "
+            "--allow-flipped-target)");
   const io::MeshPair pair = io::check_mesh_pair(unit_square(), mirrored, "s", "t", {.allow_flipped_target = true});
   EXPECT_EQ(pair.flipped_target_triangles, (std::vector<Eigen::Index>{0, 1}));
 }

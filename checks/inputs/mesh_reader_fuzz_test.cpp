@@ -28,13 +28,15 @@ const std::vector<std::string>& seeds() {
 
 /// Tokens a mutation may splice in: extremes of every field the reader parses.
 constexpr std::array<const char*, 22> tokens = {
-    "0",    "-1",  "-4",   "3",   "4",    "2147483647", "2147483648", "99999999999999999999", "-0", "nan", "inf",
-    "1e400", "1e-400", "+1", "f", "v",  "OFF", "/",     "//",         "#",   "\t",   " 3 0 1 2 "};
+    "0",   "-1",  "-4",  "3",     "4",      "2147483647", "2147483648", "99999999999999999999",
+    "-0",  "nan", "inf", "1e400", "1e-400", "+1",         "f",          "v",
+    "OFF", "/",   "//",  "#",     "\t",     " 3 0 1 2 "};
 
 std::string mutate(std::string text, Rng& rng) {
   const int steps = static_cast<int>(rng.integer(1, 4));
   for (int s = 0; s < steps; ++s) {
-    const std::size_t at = text.empty() ? 0 : static_cast<std::size_t>(rng.integer(0, static_cast<std::int64_t>(text.size()) - 1));
+    const std::size_t at =
+        text.empty() ? 0 : static_cast<std::size_t>(rng.integer(0, static_cast<std::int64_t>(text.size()) - 1));
     switch (rng.integer(0, 6)) {
       case 0:  // overwrite a byte with any byte, NUL included
         if (!text.empty()) text[at] = static_cast<char>(rng.integer(0, 255));
@@ -83,7 +85,8 @@ TEST(MeshReaderFuzz, MutatedFilesGiveAMeshOrAOneLineError) {
 
 TEST(MeshReaderFuzz, SeedsParse) {
   for (const std::string& text : seeds())
-    EXPECT_EQ(affinterp::fuzz::mesh_reader_one_input(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()), 1);
+    EXPECT_EQ(affinterp::fuzz::mesh_reader_one_input(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()),
+              1);
 }
 
 }  // namespace

@@ -21,7 +21,8 @@ double smallest_angle(const global::Mesh& mesh) {
   double smallest = std::numbers::pi;
   for (Eigen::Index i = 0; i < mesh.triangle_count(); ++i)
     for (int c = 0; c < 3; ++c) {
-      const Eigen::Vector2d a = mesh.corner(i, (c + 1) % 3) - mesh.corner(i, c), b = mesh.corner(i, (c + 2) % 3) - mesh.corner(i, c);
+      const Eigen::Vector2d a = mesh.corner(i, (c + 1) % 3) - mesh.corner(i, c),
+                            b = mesh.corner(i, (c + 2) % 3) - mesh.corner(i, c);
       smallest = std::min(smallest, std::acos(std::clamp(a.dot(b) / a.norm() / b.norm(), -1.0, 1.0)));
     }
   return smallest;
@@ -71,7 +72,8 @@ TEST(Shapes, WormCurlKeepsTheCentreLineLengthAndTurnsTheEndByThreePi) {
   EXPECT_NEAR(length, curl.length, 1e-5);
   // The end's cross-section is turned by t·θ_end: its direction (the image of (L, ±h)) is n_t(L).
   for (double t : {0.0, 0.5, 1.0}) {
-    const Eigen::Vector2d d = curl.apply(Eigen::Vector2d(curl.length, 0.1), t) - curl.apply(Eigen::Vector2d(curl.length, -0.1), t);
+    const Eigen::Vector2d d =
+        curl.apply(Eigen::Vector2d(curl.length, 0.1), t) - curl.apply(Eigen::Vector2d(curl.length, -0.1), t);
     const double angle = t * curl.theta_end;
     EXPECT_NEAR(d.x(), -0.2 * std::sin(angle), 1e-12);
     EXPECT_NEAR(d.y(), 0.2 * std::cos(angle), 1e-12);
@@ -104,8 +106,9 @@ TEST(Shapes, FilmstripsDraw) {
   fs::create_directories(folder);
   for (const std::string name : {"man-twirl", "random"}) {
     const auto pair = shapes::make_shape(name);
-    const auto files = plots::draw_filmstrip(folder / name, pair.source.triangles,
-                                             {{pair.source.vertices, "source"}, {pair.target.vertices, "target"}}, name);
+    const auto files =
+        plots::draw_filmstrip(folder / name, pair.source.triangles,
+                              {{pair.source.vertices, "source"}, {pair.target.vertices, "target"}}, name);
     ASSERT_EQ(files.size(), 2u);
     EXPECT_GT(fs::file_size(folder / (name + ".png")), 1000u);
   }

@@ -74,14 +74,15 @@ inline rc::Gen<Mat2<double>> spd() {
 /// A non-degenerate triangle: vertices in [−1, 1]² shifted by up to 3, times 10^k (|k| ≤ 4), with
 /// area at least 1e-3 of its squared diameter (so that eq. (1) is well conditioned).
 inline rc::Gen<Triangle<double>> triangle() {
-  return rc::gen::map(
-      rc::gen::tuple(rc::gen::container<std::vector<double>>(6, uniform(-1, 1)), rc::gen::inRange(-4, 5), uniform(-3, 3)),
-      [](const std::tuple<std::vector<double>, int, double>& p) {
-        const auto& [coordinates, exponent, shift] = p;
-        Triangle<double> T;
-        for (int k = 0; k < 6; ++k) T(k % 2, k / 2) = (coordinates[k] + shift) * std::pow(10.0, exponent);
-        return T;
-      });
+  return rc::gen::map(rc::gen::tuple(rc::gen::container<std::vector<double>>(6, uniform(-1, 1)),
+                                     rc::gen::inRange(-4, 5), uniform(-3, 3)),
+                      [](const std::tuple<std::vector<double>, int, double>& p) {
+                        const auto& [coordinates, exponent, shift] = p;
+                        Triangle<double> T;
+                        for (int k = 0; k < 6; ++k)
+                          T(k % 2, k / 2) = (coordinates[k] + shift) * std::pow(10.0, exponent);
+                        return T;
+                      });
 }
 
 inline double area_ratio(const Triangle<double>& T) {

@@ -1,8 +1,8 @@
 // The exact goodness deciders (theory/local/goodness.hpp) against brute force: dense sampling of t and
 // of the direction v in double precision, and exact witnesses whenever a decider says "not good".
+#include "theory/local/goodness.hpp"
 #include "checks/local/generators.hpp"
 #include "theory/exact/rational.hpp"
-#include "theory/local/goodness.hpp"
 #include "theory/local/quadratic_field.hpp"
 #include "theory/local/svd_norm_sampling.hpp"
 #include "theory/local/thesis_conditions.hpp"
@@ -17,31 +17,37 @@ using exact::Rational;
 
 /// A matrix with entries k/4, |k| ≤ 12: small rationals where ties and boundaries are common.
 rc::Gen<Mat2<Rational>> small_rational_matrix() {
-  return rc::gen::map(rc::gen::container<std::vector<int>>(4, rc::gen::inRange(-12, 13)), [](const std::vector<int>& k) {
-    Mat2<Rational> B;
-    B << Rational(k[0]) / 4, Rational(k[1]) / 4, Rational(k[2]) / 4, Rational(k[3]) / 4;
-    return B;
-  });
+  return rc::gen::map(rc::gen::container<std::vector<int>>(4, rc::gen::inRange(-12, 13)),
+                      [](const std::vector<int>& k) {
+                        Mat2<Rational> B;
+                        B << Rational(k[0]) / 4, Rational(k[1]) / 4, Rational(k[2]) / 4, Rational(k[3]) / 4;
+                        return B;
+                      });
 }
 
 /// I + N + kJ with N ⪰ 0 (sym(B − I) ⪰ 0: good for norm), or a symmetric contraction plus kJ (often
 /// good through BᵀB ⪯ sym B), or a small rational matrix: the three outcomes of the norm decider.
 rc::Gen<Mat2<Rational>> norm_test_matrix() {
-  const auto quarter = [](int lo, int hi) { return rc::gen::map(rc::gen::inRange(lo, hi + 1), [](int k) { return Rational(k) / 4; }); };
+  const auto quarter = [](int lo, int hi) {
+    return rc::gen::map(rc::gen::inRange(lo, hi + 1), [](int k) { return Rational(k) / 4; });
+  };
   const auto shaped = [=](Rational offset, int max_diagonal) {
-    return rc::gen::map(rc::gen::tuple(quarter(0, max_diagonal), quarter(0, max_diagonal), quarter(-7, 7), quarter(-2, 2)),
-                        [offset](const std::tuple<Rational, Rational, Rational, Rational>& p) {
-                          const auto& [a, b, c, k] = p;
-                          const Rational h = c * std::min(a, b) / 8;  // h² < ab: N ⪰ 0
-                          Mat2<Rational> B;
-                          B << offset + a, h - k / 8, h + k / 8, offset + b;
-                          return B;
-                        });
+    return rc::gen::map(
+        rc::gen::tuple(quarter(0, max_diagonal), quarter(0, max_diagonal), quarter(-7, 7), quarter(-2, 2)),
+        [offset](const std::tuple<Rational, Rational, Rational, Rational>& p) {
+          const auto& [a, b, c, k] = p;
+          const Rational h = c * std::min(a, b) / 8;  // h² < ab: N ⪰ 0
+          Mat2<Rational> B;
+          B << offset + a, h - k / 8, h + k / 8, offset + b;
+          return B;
+        });
   };
   return rc::gen::weightedOneOf<Mat2<Rational>>({{2, small_rational_matrix()}, {1, shaped(1, 12)}, {1, shaped(0, 4)}});
 }
 
-Mat2<double> to_double(const Mat2<Rational>& B) { return B.unaryExpr([](const Rational& q) { return static_cast<double>(q); }); }
+Mat2<double> to_double(const Mat2<Rational>& B) {
+  return B.unaryExpr([](const Rational& q) { return static_cast<double>(q); });
+}
 
 /// ‖((1−t)I + tB)v‖² sampled at t = j/n.
 std::vector<double> sampled_norms(const Mat2<double>& B, double phi, int n) {
@@ -113,7 +119,8 @@ RC_GTEST_PROP(GoodForNorm, AgreesWithDenseSamplingAndExactWitnesses, ()) {
     RC_ASSERT(norm_dips(B, v));
     const Rational t = norm_dip_time(B, v);
     const auto norm2 = [&](const Rational& s) {
-      return Vec2<Rational>((scaled(Rational(1) - s, identity2<Rational>()) + scaled(s, B)).lazyProduct(v)).squaredNorm();
+      return Vec2<Rational>((scaled(Rational(1) - s, identity2<Rational>()) + scaled(s, B)).lazyProduct(v))
+          .squaredNorm();
     };
     RC_ASSERT(t > 0);
     RC_ASSERT(t < 1);

@@ -12,9 +12,7 @@ namespace {
 using exact::Rational;
 using std::numbers::pi;
 
-double relative_error(const Mat2<double>& got, const Mat2<double>& want) {
-  return (got - want).norm() / want.norm();
-}
+double relative_error(const Mat2<double>& got, const Mat2<double>& want) { return (got - want).norm() / want.norm(); }
 
 TEST(AffineMap, MapsTheVerticesExactly) {
   Triangle<Rational> p, q;

@@ -42,7 +42,8 @@ TEST(OriginStudy, SymbolicMinimiserSolvesTheNormalEquationsExactly) {
 
 TEST(OriginStudy, EnergyE1IsE2WithBothOriginsAtZero) {
   EXPECT_TRUE((thesis_study().E2_common.subs(origin_substitution(0, 0)) - thesis_study().E1).expand().is_zero());
-  EXPECT_TRUE((thesis_study().min_E2_common.value.subs(origin_substitution(0, 0)) - thesis_study().min_E1.value).is_zero());
+  EXPECT_TRUE(
+      (thesis_study().min_E2_common.value.subs(origin_substitution(0, 0)) - thesis_study().min_E1.value).is_zero());
 }
 
 RC_GTEST_PROP(OriginStudy, MinimiserAtARationalOriginSatisfiesTheNormalEquations,

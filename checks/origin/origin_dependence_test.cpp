@@ -65,11 +65,12 @@ TEST(OriginDependence, ThePrintedConicMissesTheOriginWhereTheEnergiesCoincideByD
 TEST(OriginDependence, MovingOnlyTheSecondOriginGivesAnotherMinimum) {
   // min E2(0, o) (the chapter introduction's set-up) and min E2(o, o) differ as rational functions of o.
   const Symbols& s = symbols();
-  const GiNaC::ex split = minimise(energy_E2(thesis_study().config.A[0], thesis_study().config.A[1],
-                                             intermediate_map(thesis_study().config, 0, s.v),
-                                             intermediate_map(thesis_study().config, 1, s.v), column(0, 0), column(s.x, s.y)),
-                                   s.unknowns)
-                              .value;
+  const GiNaC::ex split =
+      minimise(energy_E2(thesis_study().config.A[0], thesis_study().config.A[1],
+                         intermediate_map(thesis_study().config, 0, s.v),
+                         intermediate_map(thesis_study().config, 1, s.v), column(0, 0), column(s.x, s.y)),
+               s.unknowns)
+          .value;
   EXPECT_FALSE((split - thesis_study().min_E2_common.value).normal().is_zero());
   EXPECT_TRUE((split - thesis_study().min_E2_common.value).subs(origin_substitution(0, 0)).is_zero());
 }

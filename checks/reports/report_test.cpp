@@ -4,15 +4,28 @@
 #include <gtest/gtest.h>
 
 TEST(Report, TableFirstThenSectionsThenEnvironment) {
-  const nlohmann::json claim = {
-      {"id", "kaji.polar.det"}, {"group", "Local"}, {"where", "Kaji §3"}, {"statement", "a | b"},
-      {"verdict", "refuted"}, {"summary", "found one"},
-      {"evidence", {{"method", "exact"}, {"sample_size", 3}, {"seed", 1}, {"tolerance", nullptr},
-                    {"worst_deviation", nullptr}, {"details", nlohmann::json::object()},
-                    {"measurements", nlohmann::json::object()}}},
-      {"counterexample", {{"x", "1/2"}}}, {"correction", nullptr}, {"figures", {"figures/p.png"}}};
-  const nlohmann::json doc = {{"seed", 1}, {"size", "quick"}, {"generated_at", "now"},
-                              {"environment", {{"cpu", "test cpu"}}}, {"claims", {claim}}};
+  const nlohmann::json claim = {{"id", "kaji.polar.det"},
+                                {"group", "Local"},
+                                {"where", "Kaji §3"},
+                                {"statement", "a | b"},
+                                {"verdict", "refuted"},
+                                {"summary", "found one"},
+                                {"evidence",
+                                 {{"method", "exact"},
+                                  {"sample_size", 3},
+                                  {"seed", 1},
+                                  {"tolerance", nullptr},
+                                  {"worst_deviation", nullptr},
+                                  {"details", nlohmann::json::object()},
+                                  {"measurements", nlohmann::json::object()}}},
+                                {"counterexample", {{"x", "1/2"}}},
+                                {"correction", nullptr},
+                                {"figures", {"figures/p.png"}}};
+  const nlohmann::json doc = {{"seed", 1},
+                              {"size", "quick"},
+                              {"generated_at", "now"},
+                              {"environment", {{"cpu", "test cpu"}}},
+                              {"claims", {claim}}};
   const std::string md = affinterp::report::render_markdown(doc);
   const auto table = md.find("| [`kaji.polar.det`]");
   const auto section = md.find("### `kaji.polar.det`: refuted");

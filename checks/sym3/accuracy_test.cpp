@@ -8,8 +8,8 @@
 #include "theory/certified/sym3.hpp"
 #endif
 
-#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
@@ -96,8 +96,7 @@ TEST(Sym3Accuracy, ExponentialsWithinTheirTolerances) {
       double worst = 0;
       for (const Sample& s : *family_samples) worst = std::max(worst, scaled_exp_error(algorithm, s));
       const auto tolerance = exp_tolerance(algorithm.name, family);
-      std::printf("%-28s %-20s worst scaled error %.2e\n", std::string(algorithm.name).c_str(), family.c_str(),
-                  worst);
+      std::printf("%-28s %-20s worst scaled error %.2e\n", std::string(algorithm.name).c_str(), family.c_str(), worst);
       if (tolerance) {
         EXPECT_LE(worst, *tolerance) << algorithm.name << " on " << family;
       }
@@ -185,14 +184,16 @@ TEST(Sym3Accuracy, FullRangeFamilyAgainstCertifiedReferences) {
     for (const ExpAlgorithm& algorithm : exp_algorithms()) {
       const certified::Ball error = certified::absolute_error(algorithm.exp(S), truth.value);
       auto& [worst, non_finite] = peers[std::string(algorithm.name)];
-      if (!std::isfinite(error.mid)) ++non_finite;
-      else worst = std::max(worst, error.mid / bound);
+      if (!std::isfinite(error.mid))
+        ++non_finite;
+      else
+        worst = std::max(worst, error.mid / bound);
     }
   }
   std::printf("full-range: %zu matrices, %d with exp S overflowing\n", draws.size(), overflowing);
   for (const auto& [name, result] : peers)
-    std::printf("%-28s full-range worst error / ours' bound %.2e, non-finite where exp S is finite: %d\n",
-                name.c_str(), result.first, result.second);
+    std::printf("%-28s full-range worst error / ours' bound %.2e, non-finite where exp S is finite: %d\n", name.c_str(),
+                result.first, result.second);
   EXPECT_GT(overflowing, 0);
   EXPECT_LT(overflowing, static_cast<int>(draws.size()));
 }

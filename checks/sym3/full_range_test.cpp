@@ -6,9 +6,9 @@
 #include "theory/linalg/symmetric.hpp"
 #include "theory/sym3/affinterp.hpp"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
@@ -28,8 +28,8 @@ constexpr double kExpFloor = 0x1p-1072;
 
 std::string show(const Mat3& S) {
   std::ostringstream out;
-  out << std::setprecision(17) << S(0, 0) << " " << S(1, 1) << " " << S(2, 2) << " " << S(0, 1) << " " << S(0, 2)
-      << " " << S(1, 2);
+  out << std::setprecision(17) << S(0, 0) << " " << S(1, 1) << " " << S(2, 2) << " " << S(0, 1) << " " << S(0, 2) << " "
+      << S(1, 2);
   return out.str();
 }
 

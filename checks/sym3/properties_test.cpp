@@ -2,10 +2,10 @@
 #include "theory/linalg/symmetric.hpp"
 #include "theory/sym3/affinterp.hpp"
 
-#include <Eigen/Cholesky>
-#include <Eigen/LU>
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
 
 #include <cmath>
 #include <iomanip>
@@ -17,16 +17,18 @@ namespace {
 /// Symmetric matrices with entries on a grid of step 1/1000 in [−bound, bound].
 rc::Gen<Mat3> symmetric(double bound) {
   const int n = static_cast<int>(bound * 1000);
-  return rc::gen::map(rc::gen::container<std::vector<int>>(6, rc::gen::inRange(-n, n + 1)), [](const std::vector<int>& e) {
-    Mat3 S;
-    S << e[0], e[3], e[4], e[3], e[1], e[5], e[4], e[5], e[2];
-    return Mat3(S / 1000.0);
-  });
+  return rc::gen::map(rc::gen::container<std::vector<int>>(6, rc::gen::inRange(-n, n + 1)),
+                      [](const std::vector<int>& e) {
+                        Mat3 S;
+                        S << e[0], e[3], e[4], e[3], e[1], e[5], e[4], e[5], e[2];
+                        return Mat3(S / 1000.0);
+                      });
 }
 
 /// SPD matrices MᵀM + I/10 with M from the same grid.
 rc::Gen<Mat3> spd() {
-  return rc::gen::map(symmetric(2.0), [](const Mat3& M) { return Mat3(linalg::outer_gram(M.transpose()) + 0.1 * Mat3::Identity()); });
+  return rc::gen::map(symmetric(2.0),
+                      [](const Mat3& M) { return Mat3(linalg::outer_gram(M.transpose()) + 0.1 * Mat3::Identity()); });
 }
 
 RC_GTEST_PROP(Sym3Properties, ExpIsSymmetricPositiveDefinite, ()) {

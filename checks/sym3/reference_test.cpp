@@ -1,7 +1,7 @@
 // The two high-precision references agree with each other, and with exactly known exponentials.
+#include "theory/sym3/reference.hpp"
 #include "experiments/inputs/sym3/families.hpp"
 #include "theory/linalg/symmetric.hpp"
-#include "theory/sym3/reference.hpp"
 
 #include <gtest/gtest.h>
 

@@ -13,11 +13,11 @@ namespace affinterp::claims {
 
 /// How a verdict was reached. Everything here except `measurements` must be deterministic for a seed.
 struct Evidence {
-  std::string method;                     ///< e.g. "exact rational computation", "grid sweep"
-  std::uint64_t sample_size = 0;          ///< cases examined (grid points, random draws, ...)
-  std::optional<std::uint64_t> seed;      ///< RNG seed of the sample, when random
-  std::optional<double> tolerance;        ///< numerical tolerance of the comparison, when inexact
-  std::optional<double> worst_deviation;  ///< largest deviation seen from the claimed statement
+  std::string method;                                      ///< e.g. "exact rational computation", "grid sweep"
+  std::uint64_t sample_size = 0;                           ///< cases examined (grid points, random draws, ...)
+  std::optional<std::uint64_t> seed;                       ///< RNG seed of the sample, when random
+  std::optional<double> tolerance;                         ///< numerical tolerance of the comparison, when inexact
+  std::optional<double> worst_deviation;                   ///< largest deviation seen from the claimed statement
   nlohmann::json details = nlohmann::json::object();       ///< further deterministic numbers
   nlohmann::json measurements = nlohmann::json::object();  ///< timings and speeds: vary run to run
 };

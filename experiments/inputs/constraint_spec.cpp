@@ -32,7 +32,8 @@ std::vector<std::string> split(const std::string& text, char separator) {
 std::optional<double> to_number(const std::string& text) {
   double x = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), x);
-  if (error != std::errc() || end != text.data() + text.size() || text.empty() || !std::isfinite(x)) return std::nullopt;
+  if (error != std::errc() || end != text.data() + text.size() || text.empty() || !std::isfinite(x))
+    return std::nullopt;
   return x;
 }
 
@@ -61,7 +62,8 @@ struct Parser {
     Eigen::Matrix2Xd result(2, static_cast<Eigen::Index>(items.size()));
     for (std::size_t j = 0; j < items.size(); ++j) {
       const auto xy = split(items[j], ',');
-      const auto x = xy.size() == 2 ? to_number(xy[0]) : std::nullopt, y = xy.size() == 2 ? to_number(xy[1]) : std::nullopt;
+      const auto x = xy.size() == 2 ? to_number(xy[0]) : std::nullopt,
+                 y = xy.size() == 2 ? to_number(xy[1]) : std::nullopt;
       if (!x || !y) refuse(kind, spec, "'" + items[j] + "' is not a point 'x,y'");
       result.col(static_cast<Eigen::Index>(j)) << *x, *y;
     }
@@ -94,8 +96,10 @@ global::EdgeDirection parse_edge_direction(const std::string& spec) {
   global::EdgeDirection edge{p.vertex(parts[0]), p.vertex(parts[1]), global::EdgeDirection::Path::local_homotopy, c};
   if (edge.i == edge.j) refuse(p.kind, spec, "the edge's two vertices must differ");
   if (parts.size() == 3) {
-    if (parts[2] == "linear") edge.path = global::EdgeDirection::Path::linear;
-    else if (parts[2] != "homotopy") refuse(p.kind, spec, "the path must be 'homotopy' or 'linear'");
+    if (parts[2] == "linear")
+      edge.path = global::EdgeDirection::Path::linear;
+    else if (parts[2] != "homotopy")
+      refuse(p.kind, spec, "the path must be 'homotopy' or 'linear'");
   }
   return edge;
 }

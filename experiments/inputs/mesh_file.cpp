@@ -55,9 +55,7 @@ class LineReader {
   [[noreturn]] void fail_at(long long line, const std::string& problem) const {
     throw MeshFileError(name_ + ":" + std::to_string(line) + ": " + problem);
   }
-  [[noreturn]] void fail_at_end(const std::string& problem) const {
-    throw MeshFileError(name_ + ": " + problem);
-  }
+  [[noreturn]] void fail_at_end(const std::string& problem) const { throw MeshFileError(name_ + ": " + problem); }
 
   double number(std::string_view token) const {
     std::string_view digits = token;
@@ -112,7 +110,8 @@ void read_point(const LineReader& in, std::size_t first, std::vector<double>& co
   const double x = in.number(tokens[first]), y = in.number(tokens[first + 1]);
   if (tokens.size() == first + 3) {
     const double z = in.number(tokens[first + 2]);
-    if (z != 0) in.fail("z = " + LineReader::printable(tokens[first + 2]) + " is not 0: only planar meshes (z = 0) are read");
+    if (z != 0)
+      in.fail("z = " + LineReader::printable(tokens[first + 2]) + " is not 0: only planar meshes (z = 0) are read");
   }
   coordinates.push_back(x);
   coordinates.push_back(y);
@@ -120,7 +119,8 @@ void read_point(const LineReader& in, std::size_t first, std::vector<double>& co
 
 global::Mesh assemble(std::vector<double>& coordinates, std::vector<int>& corners) {
   global::Mesh mesh;
-  mesh.vertices = Eigen::Map<Eigen::Matrix2Xd>(coordinates.data(), 2, static_cast<Eigen::Index>(coordinates.size() / 2));
+  mesh.vertices =
+      Eigen::Map<Eigen::Matrix2Xd>(coordinates.data(), 2, static_cast<Eigen::Index>(coordinates.size() / 2));
   mesh.triangles = Eigen::Map<Eigen::Matrix3Xi>(corners.data(), 3, static_cast<Eigen::Index>(corners.size() / 3));
   return mesh;
 }
@@ -131,7 +131,7 @@ global::Mesh parse_obj(std::string_view text, const std::string& name) {
   LineReader in(text, name);
   std::vector<double> coordinates;
   struct FaceReference {
-    long long index;           // as written: 1-based, or negative relative to the vertices so far
+    long long index;            // as written: 1-based, or negative relative to the vertices so far
     long long vertices_before;  // vertices defined before the face's line
     long long line;
   };
@@ -145,7 +145,8 @@ global::Mesh parse_obj(std::string_view text, const std::string& name) {
       read_point(in, 1, coordinates);
     } else if (keyword == "f") {
       if (tokens.size() != 4)
-        in.fail("face with " + std::to_string(tokens.size() - 1) + " vertices: only triangles are read (polygons are not triangulated)");
+        in.fail("face with " + std::to_string(tokens.size() - 1) +
+                " vertices: only triangles are read (polygons are not triangulated)");
       if (references.size() / 3 >= static_cast<std::size_t>(max_count)) in.fail("more than 2^31 - 1 faces");
       for (std::size_t c = 1; c < 4; ++c) {
         const std::string_view vertex = tokens[c].substr(0, tokens[c].find('/'));
@@ -246,7 +247,8 @@ std::string obj_text(const global::Mesh& mesh) {
   for (Eigen::Index k = 0; k < mesh.vertex_count(); ++k)
     out << "v " << mesh.vertices(0, k) << ' ' << mesh.vertices(1, k) << " 0\n";
   for (Eigen::Index i = 0; i < mesh.triangle_count(); ++i)
-    out << "f " << mesh.triangles(0, i) + 1 << ' ' << mesh.triangles(1, i) + 1 << ' ' << mesh.triangles(2, i) + 1 << '\n';
+    out << "f " << mesh.triangles(0, i) + 1 << ' ' << mesh.triangles(1, i) + 1 << ' ' << mesh.triangles(2, i) + 1
+        << '\n';
   return out.str();
 }
 

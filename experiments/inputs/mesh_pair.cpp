@@ -25,8 +25,7 @@ MeshPair check_mesh_pair(global::Mesh source, global::Mesh target, const std::st
   if (!pair.flipped_target_triangles.empty() && !options.allow_flipped_target)
     throw MeshFileError(target_name + ": " + std::to_string(pair.flipped_target_triangles.size()) +
                         " target triangle(s) flipped or collapsed relative to the source, first triangle " +
-                        std::to_string(pair.flipped_target_triangles.front()) +
-                        " (allow with --allow-flipped-target)");
+                        std::to_string(pair.flipped_target_triangles.front()) + " (allow with --allow-flipped-target)");
   pair.source = std::move(source);
   pair.target = std::move(target);
   return pair;

@@ -10,8 +10,8 @@
 namespace affinterp::io {
 
 struct MeshPair {
-  global::Mesh source, target;  ///< one triangle list, source counter-clockwise
-  bool reoriented = false;      ///< the files' triangles ran clockwise and were reversed
+  global::Mesh source, target;                         ///< one triangle list, source counter-clockwise
+  bool reoriented = false;                             ///< the files' triangles ran clockwise and were reversed
   std::vector<Eigen::Index> flipped_target_triangles;  ///< det A_i ≤ 0 (only when allowed)
 };
 

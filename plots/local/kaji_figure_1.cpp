@@ -46,7 +46,8 @@ std::vector<std::string> draw_kaji_figure_1(const std::filesystem::path& dir) {
       .script(
           "set multiplot\n"
           "set size 1, 0.6\nset origin 0, 0.4\n"
-          "set title 'Kaji Fig. 1: t = 0 ... 1.35; top: polar homotopy A^P(t) (eq. 2), bottom: exp-log homotopy A^E(t) (eq. 3)'\n"
+          "set title 'Kaji Fig. 1: t = 0 ... 1.35; top: polar homotopy A^P(t) (eq. 2), bottom: exp-log homotopy A^E(t) "
+          "(eq. 3)'\n"
           "set size ratio -1\nunset xtics\nunset ytics\nunset grid\nunset border\n"
           "set xrange [-1.4:25.8]\nset yrange [-4.6:2.1]\n"
           "set label 1 'A^P' at -1.3, 0 left font ',13'\nset label 2 'A^E' at -1.3, -3 left font ',13'\n"
@@ -57,10 +58,13 @@ std::vector<std::string> draw_kaji_figure_1(const std::filesystem::path& dir) {
           "     $labels using 1:2:(sprintf('t = %.2f', $3)) with labels font ',10' notitle\n"
           "unset label 1\nunset label 2\n"
           "set size 1, 0.4\nset origin 0, 0\nset size noratio\nset border\nset grid\nset xtics\nset ytics\n"
-          "set autoscale\nset xrange [0:1.35]\nset title 'det A(t): the polar homotopy collapses at t = 1.1 and turns over (orange); the exp-log one stays positive'\n"
-          "set xlabel 't'\nset ylabel 'det A(t)'\nset key bottom left box opaque\nset arrow 1 from 1.1, graph 0 to 1.1, graph 1 nohead dt 2 lc rgb '#777777'\n"
+          "set autoscale\nset xrange [0:1.35]\nset title 'det A(t): the polar homotopy collapses at t = 1.1 and turns "
+          "over (orange); the exp-log one stays positive'\n"
+          "set xlabel 't'\nset ylabel 'det A(t)'\nset key bottom left box opaque\nset arrow 1 from 1.1, graph 0 to "
+          "1.1, graph 1 nohead dt 2 lc rgb '#777777'\n"
           "plot $det using 1:2 with lines lt 2 title 'det A^P(t) = ((λ_1-1)t+1)((λ_2-1)t+1)', \\\n"
-          "     $det using 1:3 with lines lt 1 title 'det A^E(t) = (λ_1 λ_2)^t', 0 with lines lc rgb '#555555' lw 1 notitle\n"
+          "     $det using 1:3 with lines lt 1 title 'det A^E(t) = (λ_1 λ_2)^t', 0 with lines lc rgb '#555555' lw 1 "
+          "notitle\n"
           "unset multiplot\n")
       .render();
 }

@@ -1,7 +1,7 @@
 #include "plots/origin/fig_2_6.hpp"
 
-#include "plots/origin/triangle_outlines.hpp"
 #include "plots/figure.hpp"
+#include "plots/origin/triangle_outlines.hpp"
 #include "theory/origin/symbols.hpp"
 
 #include <string>
@@ -34,12 +34,12 @@ std::vector<std::string> draw_fig_2_6(const std::filesystem::path& dir, const or
                                       const GiNaC::ex& computed_locus, const GiNaC::ex& printed_conic) {
   const Eigen::Matrix<double, 2, 4> p = source_vertices(config);
   return Figure(dir / "thesis-fig2.6")
-          .size(760, 800)
-          .data("computed", grid(computed_locus))
-          .data("printed", grid(printed_conic))
-          .data("T1", triangle_outline(config, 0, p))
-          .data("T2", triangle_outline(config, 1, p))
-          .script("W = " + std::to_string(window) + R"gp(
+      .size(760, 800)
+      .data("computed", grid(computed_locus))
+      .data("printed", grid(printed_conic))
+      .data("T1", triangle_outline(config, 0, p))
+      .data("T2", triangle_outline(config, 1, p))
+      .script("W = " + std::to_string(window) + R"gp(
 set contour base
 set cntrparam levels discrete 0
 unset surface
@@ -66,7 +66,7 @@ plot $T1 with filledcurves closed fc rgb '#e8e8e8' notitle, \
      $printed_curve with lines lt 2 dt 2 title 'printed: x^2 - 4xy + y^2 + x + y - 1/4 = 0', \
      '+' using (0):(0) every ::0::0 with points pt 7 ps 1.2 lc rgb '#000000' title 'o = 0 (E2 = E1 by definition)'
 )gp")
-          .render();
+      .render();
 }
 
 }  // namespace affinterp::plots

@@ -1,7 +1,7 @@
 #include "plots/origin/fig_2_7.hpp"
 
-#include "plots/origin/triangle_outlines.hpp"
 #include "plots/figure.hpp"
+#include "plots/origin/triangle_outlines.hpp"
 #include "theory/origin/frame_interpolation.hpp"
 #include "theory/origin/symbols.hpp"
 

@@ -14,8 +14,7 @@ Table triangle_outline(const origin::TwoTriangles& config, unsigned i, const Eig
 Eigen::Matrix<double, 2, 4> source_vertices(const origin::TwoTriangles& config) {
   Eigen::Matrix<double, 2, 4> p;
   for (unsigned k = 0; k < 4; ++k)
-    for (unsigned r = 0; r < 2; ++r)
-      p(r, k) = GiNaC::ex_to<GiNaC::numeric>(config.source(r, k).evalf()).to_double();
+    for (unsigned r = 0; r < 2; ++r) p(r, k) = GiNaC::ex_to<GiNaC::numeric>(config.source(r, k).evalf()).to_double();
   return p;
 }
 

@@ -15,9 +15,12 @@ using nlohmann::json;
 std::string cell(std::string text) {
   std::string out;
   for (const char c : text) {
-    if (c == '|') out += "\\|";
-    else if (c == '\n') out += ' ';
-    else out += c;
+    if (c == '|')
+      out += "\\|";
+    else if (c == '\n')
+      out += ' ';
+    else
+      out += c;
   }
   return out;
 }
@@ -66,8 +69,8 @@ void write_summary_table(std::ostringstream& md, const json& claims) {
 
 void write_claim_section(std::ostringstream& md, const json& c) {
   const std::string id = c["id"];
-  md << "<a id=\"" << anchor(id) << "\"></a>\n### `" << id << "`: " << c["verdict"].get<std::string>()
-     << "\n\n*" << c["where"].get<std::string>() << ".* " << c["statement"].get<std::string>() << "\n\n";
+  md << "<a id=\"" << anchor(id) << "\"></a>\n### `" << id << "`: " << c["verdict"].get<std::string>() << "\n\n*"
+     << c["where"].get<std::string>() << ".* " << c["statement"].get<std::string>() << "\n\n";
   if (!c["summary"].get<std::string>().empty()) md << "**Finding.** " << c["summary"].get<std::string>() << "\n\n";
   const json& e = c["evidence"];
   md << "**Evidence.** " << one_line_evidence(e) << ".\n\n";
@@ -100,8 +103,9 @@ void write_engine_speed(std::ostringstream& md, const json& speed) {
     return;
   }
   md << "`build/bin/bench_interp` on " << speed.value("mesh", "?") << " (" << fixed(speed.value("triangles", json()), 0)
-     << " triangles), single-threaded, the median of three runs of at least a second each; machine: " << cell(speed.value("machine", "?")) << "; "
-     << cell(speed.value("compiler", "?")) << ". Targets: E^F ≥ 150 frames/s, E^R ≥ 25 frames/s after set-up, "
+     << " triangles), single-threaded, the median of three runs of at least a second each; machine: "
+     << cell(speed.value("machine", "?")) << "; " << cell(speed.value("compiler", "?"))
+     << ". Targets: E^F ≥ 150 frames/s, E^R ≥ 25 frames/s after set-up, "
         "set-up ≤ 200 ms. Each frame is solved as the n × n complex Hermitian system equivalent to the 2n × 2n "
         "real one (every energy commutes with turning all vertices by π/2; theory/global/hermitian_form.hpp): "
         "E^F's matrix is factored once, the others are refactorised every frame on a pattern analysed once. "

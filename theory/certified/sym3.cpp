@@ -154,8 +154,10 @@ Enclosure enclose(const Mat3& S, slong bits) {
     Num a, b;
     arb_mul(a.get(), q[i].get(), q[j].get(), exact);
     arb_mul(b.get(), q[k].get(), q[l].get(), exact);
-    if (sign > 0) arb_add(a.get(), a.get(), b.get(), exact);
-    else arb_sub(a.get(), a.get(), b.get(), exact);
+    if (sign > 0)
+      arb_add(a.get(), a.get(), b.get(), exact);
+    else
+      arb_sub(a.get(), a.get(), b.get(), exact);
     arb_mul_2exp_si(a.get(), a.get(), 1);
     return a;
   };
@@ -166,8 +168,10 @@ Enclosure enclose(const Mat3& S, slong bits) {
     const Num* parts[4] = {&w2, &x2, &y2, &z2};
     const int signs[4] = {sw, sx, sy, sz};
     for (int k = 0; k < 4; ++k) {
-      if (signs[k] > 0) arb_add(out.get(), out.get(), parts[k]->get(), exact);
-      else arb_sub(out.get(), out.get(), parts[k]->get(), exact);
+      if (signs[k] > 0)
+        arb_add(out.get(), out.get(), parts[k]->get(), exact);
+      else
+        arb_sub(out.get(), out.get(), parts[k]->get(), exact);
     }
     return out;
   };
@@ -229,8 +233,7 @@ Enclosure enclose(const Mat3& S, slong bits) {
 }
 
 /// R diag(f) Rᵀ + (ball of Frobenius radius lipschitz·η on every entry).
-std::shared_ptr<Balls::Impl> assemble(const Enclosure& e, const std::array<Num, 3>& f, const Num& lipschitz,
-                                      slong wp) {
+std::shared_ptr<Balls::Impl> assemble(const Enclosure& e, const std::array<Num, 3>& f, const Num& lipschitz, slong wp) {
   auto out = std::make_shared<Balls::Impl>(3, 3);
   Num N2, error, t;
   arb_sqr(N2.get(), e.N.get(), wp);
@@ -403,9 +406,9 @@ CertifiedMatrix exp(const Mat3& S, const Options& options) {
     arb_exp(lipschitz.get(), hi.get(), wp);
     auto F = assemble(e, f, lipschitz, wp);
     const Overflow overflow = overflow_of(*F);
-    out.status = overflow == Overflow::yes                                               ? Status::overflows
+    out.status = overflow == Overflow::yes                                                    ? Status::overflows
                  : overflow == Overflow::no && within_target(*F, options.relative_radius, wp) ? Status::certified
-                                                                                          : Status::too_wide;
+                                                                                              : Status::too_wide;
     out.value = Balls(F);
     return out;
   });
@@ -422,9 +425,9 @@ CertifiedMatrix exp_taylor(const Mat3& S, long bits) {
   CertifiedMatrix out;
   out.bits = bits;
   const Overflow overflow = overflow_of(*F);
-  out.status = overflow == Overflow::yes ? Status::overflows
+  out.status = overflow == Overflow::yes                             ? Status::overflows
                : overflow == Overflow::no && arb_mat_is_finite(F->m) ? Status::certified
-                                                                      : Status::too_wide;
+                                                                     : Status::too_wide;
   out.value = Balls(F);
   return out;
 }
@@ -488,26 +491,27 @@ CertifiedMatrix spd_function(const Mat3& S, const Options& options, Values value
 }  // namespace
 
 CertifiedMatrix pow_spd(const Mat3& S, double t, const Options& options) {
-  return spd_function(S, options, [t](const Enclosure& e, const Num& lo, const Num& hi, std::array<Num, 3>& f,
-                                      Num& lipschitz, slong wp) {
-    Num tb(t), tm1, a, b;
-    for (int k = 0; k < 3; ++k) arb_pow(f[k].get(), e.d[k].get(), tb.get(), wp);
-    // |f′| = |t| ξ^{t−1}, monotone in ξ: its largest value on [lo, hi] is at one end.
-    arb_sub_ui(tm1.get(), tb.get(), 1, wp);
-    arb_pow(a.get(), lo.get(), tm1.get(), wp);
-    arb_pow(b.get(), hi.get(), tm1.get(), wp);
-    arb_union(a.get(), a.get(), b.get(), wp);
-    arb_abs(tb.get(), tb.get());
-    arb_mul(lipschitz.get(), a.get(), tb.get(), wp);
-  });
+  return spd_function(
+      S, options,
+      [t](const Enclosure& e, const Num& lo, const Num& hi, std::array<Num, 3>& f, Num& lipschitz, slong wp) {
+        Num tb(t), tm1, a, b;
+        for (int k = 0; k < 3; ++k) arb_pow(f[k].get(), e.d[k].get(), tb.get(), wp);
+        // |f′| = |t| ξ^{t−1}, monotone in ξ: its largest value on [lo, hi] is at one end.
+        arb_sub_ui(tm1.get(), tb.get(), 1, wp);
+        arb_pow(a.get(), lo.get(), tm1.get(), wp);
+        arb_pow(b.get(), hi.get(), tm1.get(), wp);
+        arb_union(a.get(), a.get(), b.get(), wp);
+        arb_abs(tb.get(), tb.get());
+        arb_mul(lipschitz.get(), a.get(), tb.get(), wp);
+      });
 }
 
 CertifiedMatrix log_spd(const Mat3& S, const Options& options) {
-  return spd_function(S, options, [](const Enclosure& e, const Num& lo, const Num&, std::array<Num, 3>& f,
-                                     Num& lipschitz, slong wp) {
-    for (int k = 0; k < 3; ++k) arb_log(f[k].get(), e.d[k].get(), wp);
-    arb_inv(lipschitz.get(), lo.get(), wp);  // |f′| = 1/ξ ≤ 1/lo
-  });
+  return spd_function(
+      S, options, [](const Enclosure& e, const Num& lo, const Num&, std::array<Num, 3>& f, Num& lipschitz, slong wp) {
+        for (int k = 0; k < 3; ++k) arb_log(f[k].get(), e.d[k].get(), wp);
+        arb_inv(lipschitz.get(), lo.get(), wp);  // |f′| = 1/ξ ≤ 1/lo
+      });
 }
 
 namespace {
@@ -533,7 +537,8 @@ Ball relative_error(const Mat3& X, const Balls& F) {
   if (!squared_distance(num.get(), X, F)) return {std::numeric_limits<double>::infinity(), 0};
   arb_sqrtpos(num.get(), num.get(), 256);
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) arb_addmul(den.get(), arb_mat_entry(F.impl().m, i, j), arb_mat_entry(F.impl().m, i, j), 256);
+    for (int j = 0; j < 3; ++j)
+      arb_addmul(den.get(), arb_mat_entry(F.impl().m, i, j), arb_mat_entry(F.impl().m, i, j), 256);
   arb_sqrtpos(den.get(), den.get(), 256);
   arb_div(t.get(), num.get(), den.get(), 256);
   return detail::to_ball(t.get());

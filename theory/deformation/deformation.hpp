@@ -4,8 +4,8 @@
 // exponential, followed by a global Poisson-style least-squares solve for the vertex positions
 // (Xu et al. [14]; Kaji §4 with the energy E^F). Only the per-frame exponential depends on the
 // algorithm under test, as in the thesis, which replaced "the exponential part" of the deformer.
-#include "theory/sym3/exp_batch.hpp"
 #include "theory/deformation/mesh3.hpp"
+#include "theory/sym3/exp_batch.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/SparseCholesky>
@@ -34,10 +34,10 @@ class Deformation3 {
   Mesh3 source_;
   Eigen::Vector3d anchor_source_, anchor_target_;
   std::vector<double> area_;
-  std::vector<Eigen::Vector3d> axis_;          ///< rotation axis of R_i
-  std::vector<double> angle_;                  ///< rotation angle of R_i, in [0, π]
-  std::vector<Eigen::Matrix3d> log_S_;         ///< log S_i
-  Eigen::SparseMatrix<double> coupling_;       ///< the anchor's column of the system, free rows
+  std::vector<Eigen::Vector3d> axis_;                          ///< rotation axis of R_i
+  std::vector<double> angle_;                                  ///< rotation angle of R_i, in [0, π]
+  std::vector<Eigen::Matrix3d> log_S_;                         ///< log S_i
+  Eigen::SparseMatrix<double> coupling_;                       ///< the anchor's column of the system, free rows
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver_;  ///< the system without the anchor
   // Per-frame scratch space.
   std::vector<Eigen::Matrix3d> t_log_S_, S_t_;

@@ -26,7 +26,7 @@ Rational parse_rational(const std::string& text) {
 Rational from_double(double x) {
   if (!std::isfinite(x)) throw std::invalid_argument("non-finite value has no rational form");
   int exponent = 0;
-  const double mantissa = std::frexp(x, &exponent);           // x = mantissa * 2^exponent
+  const double mantissa = std::frexp(x, &exponent);                      // x = mantissa * 2^exponent
   const auto scaled = static_cast<long long>(std::ldexp(mantissa, 53));  // exact: 53-bit integer
   Rational q(scaled);
   const int shift = exponent - 53;

@@ -1,9 +1,9 @@
 #pragma once
 // Exact arithmetic used to decide algebraic claims: rationals and high-precision floats from
 // Boost.Multiprecision, with Eigen matrices over them.
+#include <Eigen/Core>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <boost/multiprecision/cpp_int.hpp>
-#include <Eigen/Core>
 #include <string>
 
 namespace affinterp::exact {

@@ -38,14 +38,16 @@ std::vector<ConstraintTerm> constraint_terms(const Constraints& constraints, con
     require_vertex(source, pin.vertex, name);
     require_weight(pin.weight, name);
     const Eigen::Vector2d p = source.vertices.col(pin.vertex), q = target.vertices.col(pin.vertex);
-    terms.push_back({{{pin.vertex, 1.0}}, pin.weight, [p, q](double t) -> Eigen::Vector2d { return (1 - t) * p + t * q; }, name});
+    terms.push_back(
+        {{{pin.vertex, 1.0}}, pin.weight, [p, q](double t) -> Eigen::Vector2d { return (1 - t) * p + t * q; }, name});
   }
   for (const VertexLocus& locus : constraints.loci) {
     const std::string name = "locus of vertex " + std::to_string(locus.vertex);
     require_vertex(source, locus.vertex, name);
     require_weight(locus.weight, name);
     try {
-      terms.push_back({{{locus.vertex, 1.0}}, locus.weight, [u = Locus(locus.points)](double t) { return u.at(t); }, name});
+      terms.push_back(
+          {{{locus.vertex, 1.0}}, locus.weight, [u = Locus(locus.points)](double t) { return u.at(t); }, name});
     } catch (const std::invalid_argument& e) {
       throw RefusedProblem(name + ": " + e.what());
     }

@@ -33,10 +33,14 @@ std::vector<TriangleTerm> triangle_terms(const Mesh& reference, const Interpolat
 /// E_i(A, B(x)) of one term, times its weight.
 TriangleQuadratic<double> local_error(Energy energy, const TriangleTerm& term, const Eigen::Matrix2d& A) {
   switch (energy) {
-    case Energy::frobenius: return frobenius_quadratic(term.D, A) * term.weight;
-    case Energy::similarity: return similarity_quadratic(term.D, A) * term.weight;
-    case Energy::blend: return blend_quadratic(term.D, A, term.frobenius_share) * term.weight;
-    case Energy::procrustes: return procrustes_quadratic(term.corners, A) * term.weight;
+    case Energy::frobenius:
+      return frobenius_quadratic(term.D, A) * term.weight;
+    case Energy::similarity:
+      return similarity_quadratic(term.D, A) * term.weight;
+    case Energy::blend:
+      return blend_quadratic(term.D, A, term.frobenius_share) * term.weight;
+    case Energy::procrustes:
+      return procrustes_quadratic(term.corners, A) * term.weight;
   }
   return {};
 }
@@ -53,10 +57,10 @@ FrameAssembly::FrameAssembly(const Mesh& source, const Mesh& target, const Inter
       forward_terms_(triangle_terms(source, options)),
       constraints_(std::move(constraints)) {
   if (reverse_) reverse_terms_ = triangle_terms(target, options);
-  isotropic_ = energy_ == Energy::frobenius ||
-               (energy_ == Energy::blend &&
-                std::all_of(forward_terms_.begin(), forward_terms_.end(),
-                            [](const TriangleTerm& term) { return term.frobenius_share == 1.0; }));
+  isotropic_ =
+      energy_ == Energy::frobenius ||
+      (energy_ == Energy::blend && std::all_of(forward_terms_.begin(), forward_terms_.end(),
+                                               [](const TriangleTerm& term) { return term.frobenius_share == 1.0; }));
   build_pattern();
 }
 
@@ -130,7 +134,8 @@ void FrameAssembly::matrix_at(double t, SparseMatrix& H) const {
   std::complex<double>* values = H.valuePtr();
   for (Eigen::Index s = 0; s < H.nonZeros(); ++s) values[s] = constant_values_[static_cast<std::size_t>(s)];
   auto add = [&](const TriangleTerm& term, const Eigen::Matrix2d& A, const int* slots) {
-    const Eigen::Matrix3cd H_i = hermitian_local_error(energy_, term.D, term.corners, A, term.frobenius_share).H * term.weight;
+    const Eigen::Matrix3cd H_i =
+        hermitian_local_error(energy_, term.D, term.corners, A, term.frobenius_share).H * term.weight;
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b)
         if (const int s = slots[3 * a + b]; s >= 0) values[s] += H_i(a, b);
@@ -148,14 +153,16 @@ Eigen::VectorXcd FrameAssembly::right_hand_side_at(double t) const {
     if (energy_ != Energy::frobenius && energy_ != Energy::blend) return;  // E^R and E^S have no linear part
     for (std::size_t i = 0; i < terms.size(); ++i) {
       const Eigen::Vector3cd g = hermitian_frobenius_linear_term(terms[i].D, paths.at(static_cast<Eigen::Index>(i), s));
-      for (std::size_t c = 0; c < 3; ++c) u[terms[i].vertex[c]] += terms[i].weight * terms[i].frobenius_share * g[static_cast<Eigen::Index>(c)];
+      for (std::size_t c = 0; c < 3; ++c)
+        u[terms[i].vertex[c]] += terms[i].weight * terms[i].frobenius_share * g[static_cast<Eigen::Index>(c)];
     }
   };
   add(forward_terms_, forward_, t);
   if (reverse_) add(reverse_terms_, *reverse_, 1 - t);
   for (const ConstraintTerm& term : constraints_) {  // c |Σ α_k z_k − r|²: linear part Re((−2 c α_k r)* z_k)
     const Eigen::Vector2d r = term.target(t);
-    for (const auto& [k, alpha_k] : term.coefficients) u[k] -= 2 * term.weight * alpha_k * std::complex<double>(r.x(), r.y());
+    for (const auto& [k, alpha_k] : term.coefficients)
+      u[k] -= 2 * term.weight * alpha_k * std::complex<double>(r.x(), r.y());
   }
   return u * -0.5;
 }
@@ -168,7 +175,8 @@ FrameQuadratic FrameAssembly::dense_quadratic_at(double t) const {
     for (int a = 0; a < 3; ++a) {
       form.u.segment<2>(2 * vertex[static_cast<std::size_t>(a)]) += q.g.segment<2>(2 * a);
       for (int b = 0; b < 3; ++b)
-        form.G.block<2, 2>(2 * vertex[static_cast<std::size_t>(a)], 2 * vertex[static_cast<std::size_t>(b)]) += q.H.block<2, 2>(2 * a, 2 * b);
+        form.G.block<2, 2>(2 * vertex[static_cast<std::size_t>(a)], 2 * vertex[static_cast<std::size_t>(b)]) +=
+            q.H.block<2, 2>(2 * a, 2 * b);
     }
     form.c += q.c;
   }

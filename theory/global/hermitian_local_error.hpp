@@ -29,7 +29,8 @@ inline Eigen::Vector3cd complex_columns(const Eigen::Matrix<double, 2, 3>& X) {
 }  // namespace detail
 
 /// ũ = −2μ of E^F.
-inline Eigen::Vector3cd hermitian_frobenius_linear_term(const Eigen::Matrix<double, 3, 2>& D, const Eigen::Matrix2d& A) {
+inline Eigen::Vector3cd hermitian_frobenius_linear_term(const Eigen::Matrix<double, 3, 2>& D,
+                                                        const Eigen::Matrix2d& A) {
   return -2.0 * detail::complex_columns(A * D.transpose());
 }
 

@@ -77,7 +77,9 @@ struct Interpolation::Engine {
   mutable PerFrame per_frame;
 
   Engine(const Mesh& source, const Mesh& target, InterpolationOptions opts, Eigen::VectorXd angles)
-      : options(std::move(opts)), theta(std::move(angles)), forward(linear_parts(source, target), options.homotopy, theta) {
+      : options(std::move(opts)),
+        theta(std::move(angles)),
+        forward(linear_parts(source, target), options.homotopy, theta) {
     if (options.symmetric) reverse.emplace(linear_parts(target, source), options.homotopy, -theta);
     auto terms = constraint_terms(options.constraints, source, target, forward);
     require_well_posed(source, terms, !has_frobenius_part(options), "E^" + to_string(options.energy));
@@ -118,7 +120,7 @@ Eigen::Matrix2Xd Interpolation::vertices_at(double t) const {
                             ", " + std::to_string(o.t_end) + "]");
   const FrameAssembly& assembly = *engine.assembly;
   const Eigen::VectorXcd b = assembly.right_hand_side_at(t);  // H z = −ũ/2 (hermitian_form.hpp)
-  if (assembly.isotropic()) {                                  // L [x y] = [Re b, Im b]
+  if (assembly.isotropic()) {                                 // L [x y] = [Re b, Im b]
     Eigen::MatrixXd xy(b.size(), 2);
     xy << b.real(), b.imag();
     return engine.fixed.solve(xy).transpose();

@@ -101,8 +101,7 @@ TriangleQuadratic<Scalar> similarity_quadratic(const LinearPartOperator<Scalar>&
 
 /// w E^F + (1 − w) E^R ("Improvements").
 template <class Scalar>
-TriangleQuadratic<Scalar> blend_quadratic(const LinearPartOperator<Scalar>& D, const Mat2<Scalar>& A,
-                                          const Scalar& w) {
+TriangleQuadratic<Scalar> blend_quadratic(const LinearPartOperator<Scalar>& D, const Mat2<Scalar>& A, const Scalar& w) {
   TriangleQuadratic<Scalar> q = frobenius_quadratic(D, A) * w;
   q += similarity_quadratic(D, A) * (Scalar(1) - w);
   return q;

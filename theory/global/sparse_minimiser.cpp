@@ -39,7 +39,8 @@ template <class Scalar>
 typename SparseMinimiser<Scalar>::Dense SparseMinimiser<Scalar>::solve(const Dense& R) const {
   Dense X = ldlt_.solve(R);
   for (Eigen::Index j = 0; j < X.cols() && U_.cols() > 0; ++j) {  // column by column: the capacitance is tiny
-    const Eigen::Matrix<Scalar, Eigen::Dynamic, 1> y = capacitance_.solve(Eigen::Matrix<Scalar, Eigen::Dynamic, 1>(U_.adjoint() * X.col(j)));
+    const Eigen::Matrix<Scalar, Eigen::Dynamic, 1> y =
+        capacitance_.solve(Eigen::Matrix<Scalar, Eigen::Dynamic, 1>(U_.adjoint() * X.col(j)));
     X.col(j) -= K_inverse_U_.lazyProduct(y);
   }
   return X;

@@ -14,8 +14,8 @@ namespace affinterp::local {
 
 template <class Scalar>
 struct Polar {
-  Scalar theta;     ///< rotation angle, (−π, π] from polar_decomposition(); callers may add 2πk
-  Mat2<Scalar> S;   ///< symmetric positive definite factor
+  Scalar theta;    ///< rotation angle, (−π, π] from polar_decomposition(); callers may add 2πk
+  Mat2<Scalar> S;  ///< symmetric positive definite factor
 };
 
 /// A = R_θ S with θ ∈ (−π, π]; throws std::invalid_argument unless det A > 0.

@@ -25,9 +25,7 @@ GiNaC::matrix translate_origin(const GiNaC::matrix& A, const GiNaC::matrix& o) {
   return result;
 }
 
-GiNaC::matrix linear_part(const GiNaC::matrix& A) {
-  return GiNaC::matrix{{A(0, 0), A(0, 1)}, {A(1, 0), A(1, 1)}};
-}
+GiNaC::matrix linear_part(const GiNaC::matrix& A) { return GiNaC::matrix{{A(0, 0), A(0, 1)}, {A(1, 0), A(1, 1)}}; }
 
 GiNaC::matrix translation(const GiNaC::matrix& A) { return GiNaC::matrix{{A(0, 2)}, {A(1, 2)}}; }
 

@@ -18,11 +18,11 @@ GiNaC::ex energy_E1(const GiNaC::matrix& A1, const GiNaC::matrix& A2, const GiNa
   return frobenius_squared(A1.sub(B1)) + frobenius_squared(A2.sub(B2));
 }
 
-GiNaC::ex energy_E2(const GiNaC::matrix& A1, const GiNaC::matrix& A2, const GiNaC::matrix& B1,
-                    const GiNaC::matrix& B2, const GiNaC::matrix& o1, const GiNaC::matrix& o2) {
+GiNaC::ex energy_E2(const GiNaC::matrix& A1, const GiNaC::matrix& A2, const GiNaC::matrix& B1, const GiNaC::matrix& B2,
+                    const GiNaC::matrix& o1, const GiNaC::matrix& o2) {
   const GiNaC::matrix minus_o1 = o1.mul_scalar(-1), minus_o2 = o2.mul_scalar(-1);
-  return energy_E1(translate_origin(A1, minus_o1), translate_origin(A2, minus_o2),
-                   translate_origin(B1, minus_o1), translate_origin(B2, minus_o2));
+  return energy_E1(translate_origin(A1, minus_o1), translate_origin(A2, minus_o2), translate_origin(B1, minus_o1),
+                   translate_origin(B2, minus_o2));
 }
 
 GiNaC::lst normal_equations(const GiNaC::ex& energy, const GiNaC::lst& unknowns) {

@@ -8,13 +8,12 @@ namespace affinterp::origin {
 GiNaC::ex frobenius_squared(const GiNaC::matrix& M);
 
 /// E1(A1, A2, B1, B2) = ‖A1 − B1‖²_F + ‖A2 − B2‖²_F (thesis Def. 2.3.1: every origin at zero).
-GiNaC::ex energy_E1(const GiNaC::matrix& A1, const GiNaC::matrix& A2, const GiNaC::matrix& B1,
-                    const GiNaC::matrix& B2);
+GiNaC::ex energy_E1(const GiNaC::matrix& A1, const GiNaC::matrix& A2, const GiNaC::matrix& B1, const GiNaC::matrix& B2);
 
 /// E2(A1, A2, B1, B2, o1, o2) = E1(T(A1, −o1), T(A2, −o2), T(B1, −o1), T(B2, −o2)) (thesis Def. 2.3.2:
 /// triangle i measured in coordinates whose origin is o_i).
-GiNaC::ex energy_E2(const GiNaC::matrix& A1, const GiNaC::matrix& A2, const GiNaC::matrix& B1,
-                    const GiNaC::matrix& B2, const GiNaC::matrix& o1, const GiNaC::matrix& o2);
+GiNaC::ex energy_E2(const GiNaC::matrix& A1, const GiNaC::matrix& A2, const GiNaC::matrix& B1, const GiNaC::matrix& B2,
+                    const GiNaC::matrix& o1, const GiNaC::matrix& o2);
 
 struct Minimum {
   GiNaC::lst minimiser;  ///< relations unknown == value, in the order of the unknowns

@@ -12,8 +12,8 @@ OriginStudy study_origin(const TwoTriangles& config) {
   const Symbols& s = symbols();
   const GiNaC::matrix o = column(s.x, s.y);
   const GiNaC::matrix B1 = intermediate_map(config, 0, s.v), B2 = intermediate_map(config, 1, s.v);
-  OriginStudy study{config, energy_E1(config.A[0], config.A[1], B1, B2),
-                    energy_E2(config.A[0], config.A[1], B1, B2, o, o), {}, {}};
+  OriginStudy study{
+      config, energy_E1(config.A[0], config.A[1], B1, B2), energy_E2(config.A[0], config.A[1], B1, B2, o, o), {}, {}};
   study.min_E1 = minimise(study.E1, s.unknowns);
   study.min_E2_common = minimise(study.E2_common, s.unknowns);
   return study;
@@ -51,8 +51,7 @@ bool proportional(const GiNaC::ex& P, const GiNaC::ex& Q) {
   return GiNaC::is_a<GiNaC::numeric>(ratio) && !ratio.is_zero();
 }
 
-std::vector<std::pair<GiNaC::numeric, GiNaC::numeric>> small_rational_points(const GiNaC::ex& P,
-                                                                             std::size_t count) {
+std::vector<std::pair<GiNaC::numeric, GiNaC::numeric>> small_rational_points(const GiNaC::ex& P, std::size_t count) {
   const Symbols& s = symbols();
   if (P.expand().degree(s.y) > 2) throw std::invalid_argument("small_rational_points: degree in y above 2");
   std::vector<std::pair<GiNaC::numeric, GiNaC::numeric>> points;
@@ -91,9 +90,12 @@ bool positive_quadratic(const GiNaC::ex& q) {
   if (e.degree(s.x) > 2 || e.degree(s.y) > 2 || e.coeff(s.x, 2).degree(s.y) > 0 || e.coeff(s.x, 1).degree(s.y) > 1)
     return false;
   // q = a x² + b xy + c y² + d x + f y + g.
-  const std::array<GiNaC::ex, 6> coefficients = {
-      e.coeff(s.x, 2), e.coeff(s.x, 1).coeff(s.y, 1), e.coeff(s.x, 0).coeff(s.y, 2),
-      e.coeff(s.x, 1).coeff(s.y, 0), e.coeff(s.x, 0).coeff(s.y, 1), e.coeff(s.x, 0).coeff(s.y, 0)};
+  const std::array<GiNaC::ex, 6> coefficients = {e.coeff(s.x, 2),
+                                                 e.coeff(s.x, 1).coeff(s.y, 1),
+                                                 e.coeff(s.x, 0).coeff(s.y, 2),
+                                                 e.coeff(s.x, 1).coeff(s.y, 0),
+                                                 e.coeff(s.x, 0).coeff(s.y, 1),
+                                                 e.coeff(s.x, 0).coeff(s.y, 0)};
   for (const GiNaC::ex& coefficient : coefficients)
     if (!GiNaC::is_a<GiNaC::numeric>(coefficient)) return false;
   const auto n = [&](int k) { return GiNaC::ex_to<GiNaC::numeric>(coefficients[k]); };

@@ -14,8 +14,8 @@ namespace affinterp::origin {
 
 struct OriginStudy {
   TwoTriangles config;
-  GiNaC::ex E1;         ///< E1(A1, A2, B1(v), B2(v)): every origin at zero
-  GiNaC::ex E2_common;  ///< E2(A1, A2, B1(v), B2(v), o, o) with o = (x, y)
+  GiNaC::ex E1;           ///< E1(A1, A2, B1(v), B2(v)): every origin at zero
+  GiNaC::ex E2_common;    ///< E2(A1, A2, B1(v), B2(v), o, o) with o = (x, y)
   Minimum min_E1;         ///< a number
   Minimum min_E2_common;  ///< rational functions of x, y
 };

@@ -11,9 +11,7 @@
 namespace affinterp::sym3 {
 namespace {
 
-split::Sym<double> upper(const Mat3& S) {
-  return {S(0, 0), S(1, 1), S(2, 2), S(0, 1), S(0, 2), S(1, 2)};
-}
+split::Sym<double> upper(const Mat3& S) { return {S(0, 0), S(1, 1), S(2, 2), S(0, 1), S(0, 2), S(1, 2)}; }
 
 Mat3 to_matrix(const split::Sym<double>& X) {
   Mat3 M;

@@ -13,10 +13,8 @@ namespace affinterp::sym3 {
 namespace {
 
 constexpr std::array eig_catalogue{
-    EigAlgorithm{"eigen-qr", eigenvalues_eigen_qr},
-    EigAlgorithm{"eigen-direct", eigenvalues_eigen_direct},
-    EigAlgorithm{"viete", eigenvalues_viete},
-    EigAlgorithm{"viete-clamped", eigenvalues_viete_clamped},
+    EigAlgorithm{"eigen-qr", eigenvalues_eigen_qr},   EigAlgorithm{"eigen-direct", eigenvalues_eigen_direct},
+    EigAlgorithm{"viete", eigenvalues_viete},         EigAlgorithm{"viete-clamped", eigenvalues_viete_clamped},
     EigAlgorithm{"affinterp", eigenvalues_affinterp},
 };
 

@@ -29,9 +29,7 @@ const Matrix& require_symmetric(const Matrix& S) {
   return S;
 }
 
-Real100 off_diagonal(const Mat3R100& A) {
-  return sqrt(A(0, 1) * A(0, 1) + A(0, 2) * A(0, 2) + A(1, 2) * A(1, 2));
-}
+Real100 off_diagonal(const Mat3R100& A) { return sqrt(A(0, 1) * A(0, 1) + A(0, 2) * A(0, 2) + A(1, 2) * A(1, 2)); }
 
 }  // namespace
 

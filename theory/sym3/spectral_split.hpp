@@ -23,9 +23,7 @@ struct Sym {
 };
 
 /// Lane-wise choice for plain doubles; xsimd::select serves the batches.
-inline double select(bool condition, double if_true, double if_false) {
-  return condition ? if_true : if_false;
-}
+inline double select(bool condition, double if_true, double if_false) { return condition ? if_true : if_false; }
 
 /// S = λ_far P + λ_mid (I − P) + K, P = v vᵀ: the pair's eigenvalues are λ_mid ± ρ.
 template <class T>
@@ -44,10 +42,11 @@ struct SpectralSplit {
 /// (Chebyshev nodes, error < 6·10⁻⁷) and one Halley step give it to within 2·10⁻¹⁶.
 template <class T>
 T far_root(T tau) {
-  const T x = T(0.70710731784884318) +
-              tau * (T(0.99971313909022519) +
-                     tau * (T(-2.0954166147569828) +
-                            tau * (T(7.0954792598411522) + tau * (T(-21.348259797242321) + tau * T(34.069988976208933)))));
+  const T x =
+      T(0.70710731784884318) +
+      tau * (T(0.99971313909022519) +
+             tau * (T(-2.0954166147569828) +
+                    tau * (T(7.0954792598411522) + tau * (T(-21.348259797242321) + tau * T(34.069988976208933)))));
   const T f = x * x * x - T(0.5) * x - tau, df = T(3.0) * x * x - T(0.5), ddf = T(6.0) * x;
   return x - T(2.0) * f * df / (T(2.0) * df * df - f * ddf);
 }
@@ -109,8 +108,8 @@ SpectralSplit<T> spectral_split(const Sym<T>& S) {
   }
   const T sigma = sqrt(n2);
   const T inv_sigma = T(1.0) / select(sigma == T(0.0), T(1.0), sigma);
-  const T det = B.xx * (B.yy * B.zz - B.yz * B.yz) - B.xy * (B.xy * B.zz - B.yz * B.xz) +
-                B.xz * (B.xy * B.yz - B.yy * B.xz);
+  const T det =
+      B.xx * (B.yy * B.zz - B.yz * B.yz) - B.xy * (B.xy * B.zz - B.yz * B.xz) + B.xz * (B.xy * B.yz - B.yy * B.xz);
   const T tau = det * (inv_sigma * inv_sigma * inv_sigma);
   const T ell = copysign(far_root(abs(tau)), tau) * sigma;
 
@@ -131,9 +130,8 @@ SpectralSplit<T> spectral_split(const Sym<T>& S) {
   // K = B − ℓ P + (ℓ/2)(I − P) = B + (ℓ/2) I − (3ℓ/2) P, traceless with eigenvalues 0, ±ρ.
   const T half = T(0.5) * ell, three_half = T(1.5) * ell;
   const Sym<T>& P = out.P;
-  const Sym<T> K{B.xx + half - three_half * P.xx, B.yy + half - three_half * P.yy,
-                 B.zz + half - three_half * P.zz, B.xy - three_half * P.xy,
-                 B.xz - three_half * P.xz,        B.yz - three_half * P.yz};
+  const Sym<T> K{B.xx + half - three_half * P.xx, B.yy + half - three_half * P.yy, B.zz + half - three_half * P.zz,
+                 B.xy - three_half * P.xy,        B.xz - three_half * P.xz,        B.yz - three_half * P.yz};
   out.lambda_far = m + scale * ell;
   out.far_gap = scale * three_half;
   out.lambda_mid = m - scale * half;
@@ -148,9 +146,8 @@ SpectralSplit<T> spectral_split(const Sym<T>& S) {
 template <class T>
 Sym<T> assemble_difference(const SpectralSplit<T>& s, T w, T f_pair, T f_dd) {
   const Sym<T>& P = s.P;
-  return Sym<T>{f_pair + w * P.xx + f_dd * s.K.xx, f_pair + w * P.yy + f_dd * s.K.yy,
-                f_pair + w * P.zz + f_dd * s.K.zz, w * P.xy + f_dd * s.K.xy,
-                w * P.xz + f_dd * s.K.xz,          w * P.yz + f_dd * s.K.yz};
+  return Sym<T>{f_pair + w * P.xx + f_dd * s.K.xx, f_pair + w * P.yy + f_dd * s.K.yy, f_pair + w * P.zz + f_dd * s.K.zz,
+                w * P.xy + f_dd * s.K.xy,          w * P.xz + f_dd * s.K.xz,          w * P.yz + f_dd * s.K.yz};
 }
 
 template <class T>
@@ -176,14 +173,12 @@ Sym<T> exp_shifted(const SpectralSplit<T>& s, T c) {
   const T e_lo = exp(mid - s.rho);
   const T r2 = s.rho * s.rho;
   // Series of (cosh ρ − 1)/ρ² and sinh ρ / ρ in ρ², enough terms for ρ ≤ 1/2 (next term < 10⁻¹⁹).
-  T cosh_tail = T(1.0 / 20922789888000.0);  // 1/16!
+  T cosh_tail = T(1.0 / 20922789888000.0);      // 1/16!
   T sinhc_series = T(1.0 / 355687428096000.0);  // 1/17!
-  constexpr double inv_fact_even[] = {1.0 / 87178291200.0, 1.0 / 479001600.0, 1.0 / 3628800.0,
-                                      1.0 / 40320.0,       1.0 / 720.0,       1.0 / 24.0,
-                                      1.0 / 2.0};
-  constexpr double inv_fact_odd[] = {1.0 / 1307674368000.0, 1.0 / 6227020800.0, 1.0 / 39916800.0,
-                                     1.0 / 362880.0,        1.0 / 5040.0,       1.0 / 120.0,
-                                     1.0 / 6.0,             1.0};
+  constexpr double inv_fact_even[] = {1.0 / 87178291200.0, 1.0 / 479001600.0, 1.0 / 3628800.0, 1.0 / 40320.0,
+                                      1.0 / 720.0,         1.0 / 24.0,        1.0 / 2.0};
+  constexpr double inv_fact_odd[] = {1.0 / 1307674368000.0, 1.0 / 6227020800.0, 1.0 / 39916800.0, 1.0 / 362880.0,
+                                     1.0 / 5040.0,          1.0 / 120.0,        1.0 / 6.0,        1.0};
   for (int i = 0; i < 7; ++i) cosh_tail = cosh_tail * r2 + T(inv_fact_even[i]);
   for (int i = 0; i < 8; ++i) sinhc_series = sinhc_series * r2 + T(inv_fact_odd[i]);
   const T coshm1_series = cosh_tail * r2;

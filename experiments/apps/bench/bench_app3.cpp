@@ -7,10 +7,10 @@
 // decompositions, logarithms, Cholesky factorisation) is done once, outside the timing, as in an
 // interactive tool.
 #include "experiments/apps/bench/bench_context.hpp"
-#include "theory/deformation/deformation.hpp"
 #include "experiments/inputs/sym3/demo_mesh.hpp"
-#include "theory/sym3/exp_batch.hpp"
 #include "experiments/inputs/sym3/pose.hpp"
+#include "theory/deformation/deformation.hpp"
+#include "theory/sym3/exp_batch.hpp"
 
 #include <filesystem>
 #include <memory>

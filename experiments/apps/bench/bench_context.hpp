@@ -14,8 +14,8 @@ void add_machine_context();
 /// A counter whose value is the CPU time in nanoseconds per item, for `items` items per iteration:
 /// (CPU seconds) / (items · iterations · 10⁻⁹), through Google Benchmark's inverted iteration rate.
 inline benchmark::Counter ns_per_item(std::int64_t items) {
-  return benchmark::Counter(static_cast<double>(items) * 1e-9, benchmark::Counter::kIsIterationInvariantRate |
-                                                                   benchmark::Counter::kInvert);
+  return benchmark::Counter(static_cast<double>(items) * 1e-9,
+                            benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 /// Runs the registered benchmarks with the command line's options (after add_machine_context()).

@@ -66,11 +66,9 @@ void register_all() {
     b->Repetitions(kRepetitions)->ReportAggregatesOnly(true)->MinTime(kMinSeconds);
   };
   for (const auto& algorithm : sym3::eig_algorithms())
-    configure(benchmark::RegisterBenchmark(("eig3/" + std::string(algorithm.name)).c_str(), eigenvalues,
-                                          &algorithm));
+    configure(benchmark::RegisterBenchmark(("eig3/" + std::string(algorithm.name)).c_str(), eigenvalues, &algorithm));
   for (const auto& algorithm : sym3::exp_algorithms())
-    configure(benchmark::RegisterBenchmark(("exp3/" + std::string(algorithm.name)).c_str(), exponential,
-                                          &algorithm));
+    configure(benchmark::RegisterBenchmark(("exp3/" + std::string(algorithm.name)).c_str(), exponential, &algorithm));
   configure(benchmark::RegisterBenchmark("exp3/affinterp-batched", exponential_batched));
 }
 

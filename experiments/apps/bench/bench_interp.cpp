@@ -46,7 +46,8 @@ const Workload& workload() {
     } else {
       load.name = "man-65k", load.source = shapes::man(0.0137);
     }
-    const Eigen::Vector2d low = load.source.vertices.rowwise().minCoeff(), high = load.source.vertices.rowwise().maxCoeff();
+    const Eigen::Vector2d low = load.source.vertices.rowwise().minCoeff(),
+                          high = load.source.vertices.rowwise().maxCoeff();
     const Eigen::Vector2d centre_left(low.x(), (low.y() + high.y()) / 2);
     const shapes::Curl curl{high.x() - low.x(), 1.0, 1};
     load.target = load.source;
@@ -116,7 +117,8 @@ void frame_refactor(benchmark::State& state, Energy energy) {
     assembly.matrix_at(t, H);
     const Eigen::SparseMatrix<double> G = global::realified(H);
     const Eigen::VectorXcd b = assembly.right_hand_side_at(t);
-    const Eigen::VectorXd r = Eigen::Map<const Eigen::VectorXd>(reinterpret_cast<const double*>(b.data()), 2 * b.size());
+    const Eigen::VectorXd r =
+        Eigen::Map<const Eigen::VectorXd>(reinterpret_cast<const double*>(b.data()), 2 * b.size());
     state.ResumeTiming();
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> ldlt(G);
     benchmark::DoNotOptimize(Eigen::VectorXd(ldlt.solve(r)).data());

@@ -1,8 +1,8 @@
 // `affinterp claims`: run the checks, write claims.json and REPORT.md.
+#include "experiments/apps/cli/command.hpp"
 #include "experiments/claims/claims_json.hpp"
 #include "experiments/claims/registry.hpp"
 #include "experiments/claims/runner.hpp"
-#include "experiments/apps/cli/command.hpp"
 #include "experiments/support/environment.hpp"
 #include "experiments/support/staged_output.hpp"
 #include "reports/generator/report.hpp"
@@ -96,8 +96,8 @@ void run(const ClaimsOptions& options) {
 
 void add_claims_command(CLI::App& app) {
   auto options = std::make_shared<ClaimsOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "claims", "Run the checks that decide the papers' claims; write claims.json and REPORT.md.");
+  CLI::App* cmd =
+      app.add_subcommand("claims", "Run the checks that decide the papers' claims; write claims.json and REPORT.md.");
   cmd->add_option("--only", options->only, "Run only these claim IDs (others keep their earlier entries)");
   cmd->add_flag("--list", options->list, "List the claim IDs and whether each has a check, then exit");
   cmd->add_option("--seed", options->seed, "Seed of every random sample")->capture_default_str();

@@ -1,11 +1,11 @@
 // `affinterp interpolate`: global interpolation (Kaji §4) between a source and a target mesh, written as
 // OBJ frames, a filmstrip (PNG + SVG), an animated GIF, an interactive viewer and per-frame metrics.
 #include "experiments/apps/cli/command.hpp"
-#include "experiments/support/progress.hpp"
-#include "experiments/support/staged_output.hpp"
 #include "experiments/inputs/constraint_spec.hpp"
 #include "experiments/inputs/mesh_file.hpp"
 #include "experiments/inputs/mesh_pair.hpp"
+#include "experiments/support/progress.hpp"
+#include "experiments/support/staged_output.hpp"
 #include "plots/mesh_animation.hpp"
 #include "plots/mesh_strip.hpp"
 #include "plots/viewer.hpp"
@@ -17,11 +17,11 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <optional>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace affinterp::cli {
@@ -60,8 +60,8 @@ global::InterpolationOptions engine_options(const InterpolateOptions& o, const i
   try {
     options.homotopy = global::parse_local_homotopy(o.local);
     options.energy = global::parse_energy(o.energy);
-    options.rotation_branch = o.rotation_branch == "principal" ? global::RotationBranch::principal
-                                                               : global::RotationBranch::consistent;
+    options.rotation_branch =
+        o.rotation_branch == "principal" ? global::RotationBranch::principal : global::RotationBranch::consistent;
     options.blend_weight = o.blend_weight;
     options.area_weighted = o.area_weights;
     options.symmetric = o.symmetric;
@@ -92,9 +92,12 @@ global::InterpolationOptions engine_options(const InterpolateOptions& o, const i
 nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
 
 nlohmann::json metrics_json(const global::FrameMetrics& m) {
-  return {{"flipped_triangles", m.flipped_triangles}, {"min_det", finite_or_null(m.min_det)},
-          {"max_det", finite_or_null(m.max_det)},     {"max_distortion", finite_or_null(m.max_distortion)},
-          {"mean_distortion", finite_or_null(m.mean_distortion)}, {"area_ratio", finite_or_null(m.area_ratio)}};
+  return {{"flipped_triangles", m.flipped_triangles},
+          {"min_det", finite_or_null(m.min_det)},
+          {"max_det", finite_or_null(m.max_det)},
+          {"max_distortion", finite_or_null(m.max_distortion)},
+          {"mean_distortion", finite_or_null(m.mean_distortion)},
+          {"area_ratio", finite_or_null(m.area_ratio)}};
 }
 
 std::string frame_name(int k) {
@@ -153,21 +156,29 @@ void run(const InterpolateOptions& o) {
     if (progress) progress->advance();
   }
 
-  nlohmann::json document = {
-      {"source", o.source},
-      {"target", o.target},
-      {"vertices", pair.source.vertex_count()},
-      {"triangles", pair.source.triangle_count()},
-      {"reoriented", pair.reoriented},
-      {"flipped_target_triangles", pair.flipped_target_triangles},
-      {"options",
-       {{"local", o.local}, {"energy", o.energy}, {"rotation_branch", o.rotation_branch},
-        {"area_weights", o.area_weights}, {"symmetric", o.symmetric}, {"blend_weight", o.blend_weight},
-        {"weights_file", o.weights_file}, {"pins", o.pins}, {"loci", o.loci}, {"edge_directions", o.edges},
-        {"barycentre_locus", o.barycentre}, {"time_range", {options.t_begin, options.t_end}}}},
-      {"frames", frames}};
+  nlohmann::json document = {{"source", o.source},
+                             {"target", o.target},
+                             {"vertices", pair.source.vertex_count()},
+                             {"triangles", pair.source.triangle_count()},
+                             {"reoriented", pair.reoriented},
+                             {"flipped_target_triangles", pair.flipped_target_triangles},
+                             {"options",
+                              {{"local", o.local},
+                               {"energy", o.energy},
+                               {"rotation_branch", o.rotation_branch},
+                               {"area_weights", o.area_weights},
+                               {"symmetric", o.symmetric},
+                               {"blend_weight", o.blend_weight},
+                               {"weights_file", o.weights_file},
+                               {"pins", o.pins},
+                               {"loci", o.loci},
+                               {"edge_directions", o.edges},
+                               {"barycentre_locus", o.barycentre},
+                               {"time_range", {options.t_begin, options.t_end}}}},
+                             {"frames", frames}};
   if (default_edge)
-    document["options"]["default_edge_direction"] = std::to_string(default_edge->i) + ":" + std::to_string(default_edge->j);
+    document["options"]["default_edge_direction"] =
+        std::to_string(default_edge->i) + ":" + std::to_string(default_edge->j);
   if (o.figures) {
     std::vector<plots::MeshFrame> drawn, strip;
     for (std::size_t k = 0; k < run.frames.size(); ++k) drawn.push_back({run.frames[k], time_label(run.times[k])});
@@ -194,7 +205,8 @@ void run(const InterpolateOptions& o) {
   staged.commit();
   int worst = 0;
   for (const auto& f : frames) worst = std::max(worst, f["flipped_triangles"].get<int>());
-  std::cerr << "wrote " << o.frames << " frames to " << o.out << " (most flipped triangles in a frame: " << worst << ")\n";
+  std::cerr << "wrote " << o.frames << " frames to " << o.out << " (most flipped triangles in a frame: " << worst
+            << ")\n";
 }
 
 }  // namespace
@@ -204,10 +216,12 @@ void add_interpolate_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "interpolate",
       "Interpolate between two compatible 2D triangle meshes (Kaji et al. 2012, §3-4): writes OUT/frame_0000.obj ..., "
-      "OUT/filmstrip.png/.svg, OUT/animation.gif, OUT/viewer.html (interactive; viewer.html#frame=K opens at frame K) and "
+      "OUT/filmstrip.png/.svg, OUT/animation.gif, OUT/viewer.html (interactive; viewer.html#frame=K opens at frame K) "
+      "and "
       "OUT/metrics.json. Vertex indices are 0-based "
       "(the order of the v lines). Meshes: triangles only (polygons refused), z = 0; when every source triangle runs "
-      "clockwise all are reversed for the computation (frames keep the files' face list); mixed orientations, zero-area "
+      "clockwise all are reversed for the computation (frames keep the files' face list); mixed orientations, "
+      "zero-area "
       "source triangles and flipped target triangles (unless allowed) are refused. On any error OUT keeps its earlier "
       "content.");
   cmd->add_option("--source", o->source, "Source mesh (.obj or .off; z must be 0)")->required();
@@ -227,23 +241,26 @@ void add_interpolate_command(CLI::App& app) {
   cmd->add_option("--blend-weight", o->blend_weight, "w in w E^F + (1-w) E^R for --energy blend")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
-  cmd->add_option("--weights", o->weights_file, "File of per-triangle blend weights w_i, one per line (--energy blend)");
+  cmd->add_option("--weights", o->weights_file,
+                  "File of per-triangle blend weights w_i, one per line (--energy blend)");
   cmd->add_flag("--area-weights,!--no-area-weights", o->area_weights,
                 "Weight each E_i by its source triangle's area (default; --no-area-weights: plain sum)");
   cmd->add_flag("--symmetric", o->symmetric, "Symmetric energy E(t) + E^-1(1-t)");
   cmd->add_option("--pin", o->pins, "V[@C]: vertex V moves on the straight line p_V -> q_V (repeatable)");
   cmd->add_option("--locus", o->loci,
                   "V[@C]:x1,y1;x2,y2;...: vertex V follows the spline through the points at t = 0..1 (repeatable)");
-  cmd->add_option("--edge-direction", o->edges,
-                  "I:J[:homotopy|linear][@C]: edge v_I - v_J follows the local homotopy (default) or the straight path. "
-                  "With E^S, E^R or blend and no --pin/--locus/--edge-direction, one edge of the source triangle nearest "
-                  "the barycentre follows its local homotopy (fixes rotation and scale; listed in metrics.json)");
+  cmd->add_option(
+      "--edge-direction", o->edges,
+      "I:J[:homotopy|linear][@C]: edge v_I - v_J follows the local homotopy (default) or the straight path. "
+      "With E^S, E^R or blend and no --pin/--locus/--edge-direction, one edge of the source triangle nearest "
+      "the barycentre follows its local homotopy (fixes rotation and scale; listed in metrics.json)");
   cmd->add_option("--barycentre-locus", o->barycentre,
                   "linear[@C] | none | x1,y1;x2,y2;...[@C]: the barycentre's path (linear: source to target)")
       ->capture_default_str();
   cmd->add_option("--time-range", o->time_range, "T0:T1, the times of the first and last frame (extrapolation allowed)")
       ->capture_default_str();
-  cmd->add_flag("--allow-flipped-target", o->allow_flipped_target, "Accept target triangles flipped against the source");
+  cmd->add_flag("--allow-flipped-target", o->allow_flipped_target,
+                "Accept target triangles flipped against the source");
   cmd->add_flag("!--no-figures", o->figures, "Write only frames and metrics.json (no filmstrip, GIF or viewer)");
   cmd->callback([o] { run(*o); });
 }

@@ -1,8 +1,8 @@
 // `affinterp shapes`: write the project's generated source/target mesh pairs as OBJ files.
 #include "experiments/apps/cli/command.hpp"
-#include "experiments/support/staged_output.hpp"
 #include "experiments/inputs/mesh_file.hpp"
 #include "experiments/inputs/shapes/catalogue.hpp"
+#include "experiments/support/staged_output.hpp"
 
 #include <iostream>
 #include <memory>
@@ -35,15 +35,16 @@ void run(const ShapesOptions& options) {
   io::write_obj(pair.source, staged.staging() / "source.obj");
   io::write_obj(pair.target, staged.staging() / "target.obj");
   staged.commit();
-  std::cerr << "wrote " << options.out << "/source.obj and target.obj (" << pair.source.vertex_count()
-            << " vertices, " << pair.source.triangle_count() << " triangles)\n";
+  std::cerr << "wrote " << options.out << "/source.obj and target.obj (" << pair.source.vertex_count() << " vertices, "
+            << pair.source.triangle_count() << " triangles)\n";
 }
 
 }  // namespace
 
 void add_shapes_command(CLI::App& app) {
   auto options = std::make_shared<ShapesOptions>();
-  CLI::App* cmd = app.add_subcommand("shapes", "Write a generated source/target mesh pair (OUT/source.obj, OUT/target.obj).");
+  CLI::App* cmd =
+      app.add_subcommand("shapes", "Write a generated source/target mesh pair (OUT/source.obj, OUT/target.obj).");
   cmd->add_option("name", options->name, "Shape pair name (see --list)");
   cmd->add_flag("--list", options->list, "List the shape pairs with a description, then exit");
   cmd->add_option("--out", options->out, "Folder for source.obj and target.obj");

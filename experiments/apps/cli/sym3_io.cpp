@@ -34,7 +34,8 @@ sym3::Mat3 parse(const std::string& line, std::size_t number) {
     values.push_back(value);
   }
   if (values.size() != 9) {
-    throw CommandFailed(where + "expected 9 numbers (a 3×3 matrix, row-major), found " + std::to_string(values.size()), 1);
+    throw CommandFailed(where + "expected 9 numbers (a 3×3 matrix, row-major), found " + std::to_string(values.size()),
+                        1);
   }
   sym3::Mat3 S;
   for (int i = 0; i < 3; ++i)

@@ -9,8 +9,8 @@
 
 namespace affinterp::claims::local {
 
-using exact::Rational;
 using affinterp::local::Mat2;
+using exact::Rational;
 
 inline nlohmann::json area_witness(const Mat2<Rational>& B) {
   const auto det = affinterp::local::blend_determinant(B);
@@ -19,10 +19,11 @@ inline nlohmann::json area_witness(const Mat2<Rational>& B) {
   nlohmann::json t_json = nlohmann::json::array(), det_json = nlohmann::json::array();
   for (const Rational& t : times) t_json.push_back(exact::to_string(t)), det_json.push_back(exact::to_string(det(t)));
   const bool monotone = affinterp::local::monotone_on_unit_interval(det);
-  return {{"t", t_json},
-          {"det((1-t)I + tB)", det_json},
-          {"det polynomial [c0, c1, c2]", {exact::to_string(det.c0), exact::to_string(det.c1), exact::to_string(det.c2)}},
-          {"fails", monotone ? "positivity" : "monotonicity: an interior extreme at the middle t"}};
+  return {
+      {"t", t_json},
+      {"det((1-t)I + tB)", det_json},
+      {"det polynomial [c0, c1, c2]", {exact::to_string(det.c0), exact::to_string(det.c1), exact::to_string(det.c2)}},
+      {"fails", monotone ? "positivity" : "monotonicity: an interior extreme at the middle t"}};
 }
 
 }  // namespace affinterp::claims::local

@@ -33,8 +33,9 @@ inline std::optional<Vec2<Rational>> norm_dip_direction(const Mat2<Rational>& B)
   if (best_margin <= 0) return std::nullopt;
   for (int digits = 0; digits <= 15; ++digits) {
     const double scale = std::pow(10.0, digits);
-    const Vec2<Rational> v(Rational(static_cast<long long>(std::round(std::cos(best_phi) * scale))) / static_cast<long long>(scale),
-                           Rational(static_cast<long long>(std::round(std::sin(best_phi) * scale))) / static_cast<long long>(scale));
+    const Vec2<Rational> v(
+        Rational(static_cast<long long>(std::round(std::cos(best_phi) * scale))) / static_cast<long long>(scale),
+        Rational(static_cast<long long>(std::round(std::sin(best_phi) * scale))) / static_cast<long long>(scale));
     if (affinterp::local::norm_dips(B, v)) return v;
   }
   return std::nullopt;

@@ -37,7 +37,8 @@ GiNaC::numeric leading_coefficient(const GiNaC::ex& P) {
   const GiNaC::ex e = P.expand();
   const int degree = origin::total_degree(e);
   for (int i = degree; i >= 0; --i)
-    if (const GiNaC::ex c = e.coeff(s.x, i).coeff(s.y, degree - i); !c.is_zero()) return GiNaC::ex_to<GiNaC::numeric>(c);
+    if (const GiNaC::ex c = e.coeff(s.x, i).coeff(s.y, degree - i); !c.is_zero())
+      return GiNaC::ex_to<GiNaC::numeric>(c);
   return 0;
 }
 

@@ -41,11 +41,14 @@ const std::vector<ShapeInfo>& shape_catalogue() {
   static const std::vector<ShapeInfo> list = [] {
     std::vector<ShapeInfo> shapes;
     for (const Pose& pose : man_poses())
-      shapes.push_back({"man-" + pose.name, "gingerbread man, rest pose -> '" + pose.name +
-                                                "' (skeletal deformation: limbs rotated about joints, smoothly blended)"});
+      shapes.push_back(
+          {"man-" + pose.name, "gingerbread man, rest pose -> '" + pose.name +
+                                   "' (skeletal deformation: limbs rotated about joints, smoothly blended)"});
     shapes.push_back({"worm-curl", "bar 8 x 0.5 -> curled so the end turns by 3*pi (exact in-between poses known)"});
-    shapes.push_back({"graded-bend", "bar 4 x 1, fine triangles for x < 1.5, coarse elsewhere -> tapered and bent by pi/2"});
-    shapes.push_back({"random", "Delaunay mesh of random points -> random affine map plus per-vertex offsets (--seed)"});
+    shapes.push_back(
+        {"graded-bend", "bar 4 x 1, fine triangles for x < 1.5, coarse elsewhere -> tapered and bent by pi/2"});
+    shapes.push_back(
+        {"random", "Delaunay mesh of random points -> random affine map plus per-vertex offsets (--seed)"});
     return shapes;
   }();
   return list;

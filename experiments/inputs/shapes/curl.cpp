@@ -10,8 +10,8 @@ double Curl::theta(double s) const { return theta_end * std::pow(s / length, pow
 Eigen::Vector2d Curl::apply(const Eigen::Vector2d& point, double t) const {
   // c_t(s) by composite 5-point Gauss–Legendre quadrature on panels of length ≤ L/256: θ is a
   // polynomial in s of low degree, so the error is at the rounding level.
-  static constexpr std::array<double, 5> node = {-0.9061798459386640, -0.5384693101056831, 0.0,
-                                                 0.5384693101056831, 0.9061798459386640};
+  static constexpr std::array<double, 5> node = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
+                                                 0.9061798459386640};
   static constexpr std::array<double, 5> weight = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
                                                    0.4786286704993665, 0.2369268850561891};
   const double s = point.x(), y = point.y();

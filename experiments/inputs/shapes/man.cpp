@@ -23,12 +23,12 @@ Outline right_half() {
   const double neck_angle = std::atan2(-std::sqrt(head_radius * head_radius - neck * neck), neck);
   append_arc(half, head, head_radius, pi / 2, neck_angle, 8);  // from the crown down to the neck
   half.emplace_back(neck, 1.22);
-  half.emplace_back(0.3, 1.15);       // shoulder
+  half.emplace_back(0.3, 1.15);                                    // shoulder
   append_arc(half, Vector2d(1.2, 1.0), 0.15, pi / 2, -pi / 2, 6);  // top of the arm, then the hand
-  half.emplace_back(0.35, 0.85);      // armpit
-  half.emplace_back(0.35, 0.15);      // hip
-  append_arc(half, Vector2d(0.4, -0.95), 0.15, 0, -pi, 6);  // outer ankle, then the foot
-  half.emplace_back(0.0, -0.1);       // crotch
+  half.emplace_back(0.35, 0.85);                                   // armpit
+  half.emplace_back(0.35, 0.15);                                   // hip
+  append_arc(half, Vector2d(0.4, -0.95), 0.15, 0, -pi, 6);         // outer ankle, then the foot
+  half.emplace_back(0.0, -0.1);                                    // crotch
   return half;
 }
 
@@ -50,15 +50,25 @@ const std::vector<Limb>& limbs() {
   static const std::vector<Limb> list = [] {
     const Vector2d right_leg = Vector2d(0.2, -1.1).normalized(), left_leg(-right_leg.x(), right_leg.y());
     return std::vector<Limb>{
-        {{0, 1.15}, {0, 1}, {{0.07, 0.2, &Pose::neck}},
+        {{0, 1.15},
+         {0, 1},
+         {{0.07, 0.2, &Pose::neck}},
          [](const Vector2d& p) { return p.y() > 1.15 && std::abs(p.x()) < 0.3; }},
-        {{0.35, 1.0}, {1, 0}, {{0.1, 0.45, &Pose::right_shoulder}, {0.5, 0.75, &Pose::right_elbow}},
+        {{0.35, 1.0},
+         {1, 0},
+         {{0.1, 0.45, &Pose::right_shoulder}, {0.5, 0.75, &Pose::right_elbow}},
          [](const Vector2d& p) { return p.x() > 0.35 && p.y() > 0.8; }},
-        {{-0.35, 1.0}, {-1, 0}, {{0.1, 0.45, &Pose::left_shoulder}, {0.5, 0.75, &Pose::left_elbow}},
+        {{-0.35, 1.0},
+         {-1, 0},
+         {{0.1, 0.45, &Pose::left_shoulder}, {0.5, 0.75, &Pose::left_elbow}},
          [](const Vector2d& p) { return p.x() < -0.35 && p.y() > 0.8; }},
-        {{0.2, 0.15}, right_leg, {{0.3, 0.6, &Pose::right_hip}, {0.65, 0.9, &Pose::right_knee}},
+        {{0.2, 0.15},
+         right_leg,
+         {{0.3, 0.6, &Pose::right_hip}, {0.65, 0.9, &Pose::right_knee}},
          [](const Vector2d& p) { return p.x() >= 0 && p.y() < 0.15; }},
-        {{-0.2, 0.15}, left_leg, {{0.3, 0.6, &Pose::left_hip}, {0.65, 0.9, &Pose::left_knee}},
+        {{-0.2, 0.15},
+         left_leg,
+         {{0.3, 0.6, &Pose::left_hip}, {0.65, 0.9, &Pose::left_knee}},
          [](const Vector2d& p) { return p.x() < 0 && p.y() < 0.15; }},
     };
   }();
@@ -102,7 +112,8 @@ Vector2d bend(const Limb& limb, const Pose& pose, const Vector2d& p) {
     centre += (u - knots.back().first) * std::polar(1.0, phi);
   }
   const Complex axis(limb.axis.x(), limb.axis.y());
-  const Complex image = Complex(limb.origin.x(), limb.origin.y()) + axis * (centre + Complex(0, v) * std::polar(1.0, phi));
+  const Complex image =
+      Complex(limb.origin.x(), limb.origin.y()) + axis * (centre + Complex(0, v) * std::polar(1.0, phi));
   return {image.real(), image.imag()};
 }
 

@@ -1,7 +1,7 @@
 #include "experiments/inputs/shapes/random_pair.hpp"
 
-#include "experiments/support/random.hpp"
 #include "experiments/inputs/shapes/triangulate.hpp"
+#include "experiments/support/random.hpp"
 #include "theory/global/mesh_validation.hpp"
 
 #include <Eigen/Geometry>
@@ -23,7 +23,8 @@ MeshPairShapes random_pair(std::uint64_t seed, int interior_points) {
   const Eigen::Matrix2d A = Eigen::Rotation2Dd(angle).toRotationMatrix() * shear * scale;
   const Eigen::Vector2d d(rng.uniform(-1, 1), rng.uniform(-1, 1));
   Eigen::Matrix2Xd offsets(2, pair.source.vertex_count());
-  for (Eigen::Index k = 0; k < offsets.cols(); ++k) offsets.col(k) = Eigen::Vector2d(rng.uniform(-1, 1), rng.uniform(-1, 1));
+  for (Eigen::Index k = 0; k < offsets.cols(); ++k)
+    offsets.col(k) = Eigen::Vector2d(rng.uniform(-1, 1), rng.uniform(-1, 1));
 
   const Eigen::Matrix2Xd moved = (A * pair.source.vertices).colwise() + d;
   pair.target = pair.source;

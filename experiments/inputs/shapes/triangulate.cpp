@@ -46,8 +46,8 @@ global::Mesh collect(const Triangulation& tr, InDomain in_domain) {
 }  // namespace
 
 global::Mesh triangulate(const Outline& outline, double max_edge, const std::vector<Eigen::Vector2d>& extra_points) {
-  using Tds = CGAL::Triangulation_data_structure_2<CGAL::Delaunay_mesh_vertex_base_2<K>,
-                                                   CGAL::Delaunay_mesh_face_base_2<K>>;
+  using Tds =
+      CGAL::Triangulation_data_structure_2<CGAL::Delaunay_mesh_vertex_base_2<K>, CGAL::Delaunay_mesh_face_base_2<K>>;
   using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds>;
   CDT cdt;
   std::vector<CDT::Vertex_handle> corners;

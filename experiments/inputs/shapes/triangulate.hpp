@@ -13,7 +13,8 @@ using Outline = std::vector<Eigen::Vector2d>;  ///< a simple closed polygon (las
 /// Meshes the inside of `outline` with edges no longer than `max_edge`. `extra_points` (inside the
 /// outline) are inserted first: a dense set makes a finely meshed region. Triangles run
 /// counter-clockwise.
-global::Mesh triangulate(const Outline& outline, double max_edge, const std::vector<Eigen::Vector2d>& extra_points = {});
+global::Mesh triangulate(const Outline& outline, double max_edge,
+                         const std::vector<Eigen::Vector2d>& extra_points = {});
 
 /// The Delaunay triangulation of a point set (the triangles of its convex hull), counter-clockwise.
 global::Mesh delaunay(const std::vector<Eigen::Vector2d>& points);

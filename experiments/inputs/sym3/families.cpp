@@ -40,9 +40,7 @@ std::vector<Mat3> draw_thesis(const Family&, std::uint64_t seed, std::size_t cou
 }
 
 std::vector<Mat3> draw_spread(const Family&, std::uint64_t seed, std::size_t count) {
-  return rotated(seed, count, [](Rng& rng) {
-    return Vec3(rng.uniform(0, 3), rng.uniform(0, 3), rng.uniform(0, 3));
-  });
+  return rotated(seed, count, [](Rng& rng) { return Vec3(rng.uniform(0, 3), rng.uniform(0, 3), rng.uniform(0, 3)); });
 }
 
 /// λ, λ + gap and a free eigenvalue, all in [0, 3].
@@ -72,9 +70,8 @@ std::vector<Mat3> draw_wide(const Family&, std::uint64_t seed, std::size_t count
 }
 
 std::vector<Mat3> draw_large(const Family&, std::uint64_t seed, std::size_t count) {
-  return rotated(seed, count, [](Rng& rng) {
-    return Vec3(rng.uniform(-700, 700), rng.uniform(-700, 700), rng.uniform(-700, 700));
-  });
+  return rotated(seed, count,
+                 [](Rng& rng) { return Vec3(rng.uniform(-700, 700), rng.uniform(-700, 700), rng.uniform(-700, 700)); });
 }
 
 std::vector<Mat3> draw_diagonal(const Family&, std::uint64_t seed, std::size_t count) {
@@ -152,8 +149,8 @@ Mat3 draw_across_range(Rng& rng) {
       const double huge = -std::abs(across_range(rng, 30, 1023));
       const double coupling1 = rng.integer(0, 1) ? across_range(rng, -1074, -500) : 0.0;
       const double coupling2 = rng.integer(0, 1) ? across_range(rng, -1074, -500) : 0.0;
-      return permuted(rng, {huge, rng.uniform(-5, 5), rng.uniform(-5, 5), coupling1, coupling2,
-                            across_range(rng, -1074, 2)});
+      return permuted(
+          rng, {huge, rng.uniform(-5, 5), rng.uniform(-5, 5), coupling1, coupling2, across_range(rng, -1074, 2)});
     }
     case 2:
     case 3: {
@@ -229,29 +226,35 @@ const std::vector<double>& cluster_gaps() {
 const std::vector<Family>& families() {
   static const std::vector<Family> all = [] {
     std::vector<Family> f = {
-        {"thesis", "S = MᵀM, M uniform in [−1, 1] (thesis §3.4); spectrum in [0, 9]", {}, false,
-         draw_thesis},
+        {"thesis", "S = MᵀM, M uniform in [−1, 1] (thesis §3.4); spectrum in [0, 9]", {}, false, draw_thesis},
         {"spread", "eigenvalues uniform in [0, 3], random basis", {}, true, draw_spread},
-        {"wide", "eigenvalues s·10⁻¹², s·10^u, s (ratio 10¹², s ∈ [1, 3]), random basis", {}, true,
-         draw_wide},
+        {"wide", "eigenvalues s·10⁻¹², s·10^u, s (ratio 10¹², s ∈ [1, 3]), random basis", {}, true, draw_wide},
         {"large", "eigenvalues uniform in [−700, 700], random basis", {}, false, draw_large},
         {"diagonal", "diagonal, entries uniform in [0, 3]", {}, true, draw_diagonal},
-        {"nearly-diagonal", "diagonal in [0.01, 2.99] plus off-diagonal entries up to 10⁻⁸", {}, true,
+        {"nearly-diagonal",
+         "diagonal in [0.01, 2.99] plus off-diagonal entries up to 10⁻⁸",
+         {},
+         true,
          draw_nearly_diagonal},
         {"scalar", "λI, λ uniform in [0, 3] (exact triple eigenvalue)", {}, true, draw_scalar},
         {"zero", "the zero matrix", {}, true, draw_zero},
     };
     for (double gap : cluster_gaps())
-      f.push_back({"pair-gap-" + gap_name(gap), "eigenvalues λ, λ + " + gap_name(gap) +
-                   " and a free one, in [0, 3], random basis", gap, true, draw_pair});
+      f.push_back({"pair-gap-" + gap_name(gap),
+                   "eigenvalues λ, λ + " + gap_name(gap) + " and a free one, in [0, 3], random basis", gap, true,
+                   draw_pair});
     for (double gap : cluster_gaps())
-      f.push_back({"triple-gap-" + gap_name(gap), "eigenvalues λ, λ + " + gap_name(gap) + ", λ + 2·" +
-                   gap_name(gap) + ", in [0, 3], random basis", gap, true, draw_triple});
+      f.push_back({"triple-gap-" + gap_name(gap),
+                   "eigenvalues λ, λ + " + gap_name(gap) + ", λ + 2·" + gap_name(gap) + ", in [0, 3], random basis",
+                   gap, true, draw_triple});
     // Last, so that every family before it keeps its index (the claims seed each family by it).
     f.push_back({"full-range",
                  "the whole double range: subnormal and tiny entries, 10^±300 mixed scales, squares that overflow, "
                  "λmax around exp's overflow (709.78) and underflow (−745), random sign/mantissa/exponent entries",
-                 {}, false, draw_full_range, true});
+                 {},
+                 false,
+                 draw_full_range,
+                 true});
     return f;
   }();
   return all;

@@ -25,8 +25,7 @@ T next_number(std::istream& in, const std::filesystem::path& file, const char* w
   if (!next_token(in, token)) throw std::runtime_error(file.string() + ": truncated (expected " + what + ")");
   std::istringstream parse(token);
   T value;
-  if (!(parse >> value) || !parse.eof())
-    throw std::runtime_error(file.string() + ": bad " + what + " '" + token + "'");
+  if (!(parse >> value) || !parse.eof()) throw std::runtime_error(file.string() + ": bad " + what + " '" + token + "'");
   return value;
 }
 
