@@ -17,6 +17,11 @@ std::string without_timings(const ClaimResult& result) {
   nlohmann::json entry = to_json(result);
   entry.erase("seconds");
   entry["evidence"].erase("measurements");
+  if (entry["proof"].is_object())
+    for (auto& sentence : entry["proof"]["sentences"]) {
+      sentence.erase("seconds");
+      for (auto& run : sentence["runs"]) run.erase("seconds");
+    }
   return entry.dump(1);
 }
 

@@ -22,7 +22,7 @@ namespace {
 
 /// A claim with the given ID and check, for registries built by hand.
 Claim claim(std::string_view id, Check check = {}, Chapter chapter = Chapter::local) {
-  return {id, chapter, "Kaji §3", "a statement", std::move(check)};
+  return {id, chapter, "Kaji §3", "a statement", Strength::sample, std::move(check)};
 }
 
 }  // namespace
@@ -33,7 +33,8 @@ TEST(Registry, RefusesMalformedRepeatedAndUnstatedClaims) {
   EXPECT_THROW(registry.add(claim("kaji.polar det")), std::logic_error);
   registry.add(claim("kaji.polar.det"));
   EXPECT_THROW(registry.add(claim("kaji.polar.det")), std::logic_error);
-  EXPECT_THROW(registry.add({"kaji.no-statement", Chapter::local, "Kaji §3", "", {}}), std::logic_error);
+  EXPECT_THROW(registry.add({"kaji.no-statement", Chapter::local, "Kaji §3", "", Strength::sample, {}}),
+               std::logic_error);
 }
 
 TEST(Registry, KeepsRunOrderWhateverTheOrderOfDeclaration) {

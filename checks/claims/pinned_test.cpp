@@ -74,6 +74,11 @@ TEST(PinnedVerdicts, NameEveryDeclaredClaimOnce) {
         << claim.id << " is declared but neither pinned nor marked measured in " << AFFINTERP_PINNED_VERDICTS;
 }
 
+TEST(PinnedVerdicts, EveryClaimSaysHowStrongItsVerdictIs) {
+  for (const Claim& claim : registered_claims().claims())
+    EXPECT_NE(claim.strength, Strength::unstated) << claim.id << " declares no strength (grid, sample, ...)";
+}
+
 class PinnedVerdict : public testing::TestWithParam<Pin> {};
 
 TEST_P(PinnedVerdict, StillHolds) {
@@ -85,6 +90,10 @@ TEST_P(PinnedVerdict, StillHolds) {
   run.size = Size::quick;
   run.threads = 2;
   const Outcome outcome = claim->check(run.for_claim(claim->id));
+  if (outcome.strength == Strength::proved) {
+    ASSERT_TRUE(outcome.proof.has_value()) << pin.id << " says proved but carries no proof";
+    EXPECT_GE(outcome.proof->checked_by.size(), 2u) << pin.id << ": a proof needs two independent deciders";
+  }
   if (pin.verdict) {
     EXPECT_EQ(to_string(outcome.verdict), to_string(*pin.verdict))
         << "the verdict on " << pin.id << " changed from its pinned value: " << outcome.summary;

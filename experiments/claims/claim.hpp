@@ -31,7 +31,10 @@ struct Claim {
   Chapter chapter;             ///< folder and report section
   std::string_view where;      ///< place in the paper
   std::string_view statement;  ///< paraphrase of what is claimed, in our own words
-  Check check;                 ///< decides the claim; empty while its check is not written (verdict `pending`)
+  /// How strong the verdict its method reaches is (grid, sample, exact counterexample, measured); a check that
+  /// proves its claim for all reals says so in its Outcome, which takes precedence.
+  Strength strength = Strength::unstated;
+  Check check;  ///< decides the claim; empty while its check is not written (verdict `pending`)
 };
 
 /// The name of a claim's file: its ID with every character other than a letter or digit written '_'.

@@ -11,6 +11,25 @@ namespace {
 
 nlohmann::json optional_json(const auto& value) { return value ? nlohmann::json(*value) : nlohmann::json(nullptr); }
 
+nlohmann::json proof_json(const std::optional<Proof>& proof) {
+  if (!proof) return nullptr;
+  nlohmann::json sentences = nlohmann::json::array();
+  for (const ProofSentence& s : proof->sentences) {
+    nlohmann::json runs = nlohmann::json::array();
+    for (const ProofSentence::Run& r : s.runs)
+      runs.push_back({{"tool", r.tool}, {"file", r.file}, {"result", r.result}, {"seconds", r.seconds}});
+    // "file" and "seconds" of the sentence are its first decider's, as the format names them.
+    sentences.push_back({{"name", s.name},
+                         {"meaning", s.meaning},
+                         {"result", s.result},
+                         {"file", s.runs.empty() ? "" : s.runs.front().file},
+                         {"seconds", s.runs.empty() ? 0.0 : s.runs.front().seconds},
+                         {"runs", runs}});
+  }
+  return {
+      {"scope", proof->scope}, {"method", proof->method}, {"checked_by", proof->checked_by}, {"sentences", sentences}};
+}
+
 std::string utc_now() {
   const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
   std::tm tm{};
@@ -31,6 +50,7 @@ nlohmann::json to_json(const ClaimResult& result) {
       {"where", result.claim->where},
       {"statement", result.claim->statement},
       {"verdict", to_string(o.verdict)},
+      {"strength", to_string(o.strength)},
       {"summary", o.summary},
       {"evidence",
        {{"method", e.method},
@@ -42,6 +62,7 @@ nlohmann::json to_json(const ClaimResult& result) {
         {"measurements", e.measurements}}},
       {"counterexample", o.counterexample},
       {"correction", optional_json(o.correction)},
+      {"proof", proof_json(o.proof)},
       {"figures", o.figures},
       {"seconds", result.seconds},
   };

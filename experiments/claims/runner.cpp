@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <iomanip>
+#include <iostream>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
+
+#include <unistd.h>
 
 namespace affinterp::claims {
 
@@ -18,6 +21,9 @@ std::vector<ClaimResult> run_claims(const ClaimRegistry& registry, const RunCont
   for (const Claim& claim : registry.claims())
     if (ids.empty() || std::find(ids.begin(), ids.end(), claim.id) != ids.end()) selected.push_back(&claim);
 
+  // On a terminal the line shows "..." while a check runs and is then completed in place; in a log each
+  // claim gets one line, written when its check ends.
+  const bool terminal = &progress == &std::cerr && isatty(STDERR_FILENO) == 1;
   std::vector<ClaimResult> results;
   std::size_t index = 0;
   for (const Claim* claim : selected) {
@@ -25,11 +31,12 @@ std::vector<ClaimResult> run_claims(const ClaimRegistry& registry, const RunCont
     ClaimResult result{claim, {}, 0, {}};
     std::ostringstream line;
     line << "[" << std::setw(2) << index << "/" << selected.size() << "] " << claim->id << " ... ";
-    progress << line.str() << std::flush;
+    if (terminal) progress << line.str() << std::flush;
     if (claim->check) {
       const auto start = std::chrono::steady_clock::now();
       try {
         result.outcome = claim->check(context.for_claim(claim->id));
+        if (result.outcome.strength == Strength::unstated) result.outcome.strength = claim->strength;
       } catch (const std::exception& e) {
         result.error = e.what();
       }
@@ -37,7 +44,7 @@ std::vector<ClaimResult> run_claims(const ClaimRegistry& registry, const RunCont
     } else {
       result.outcome.summary = "no check implemented yet";
     }
-    progress << "\r" << line.str();  // a check's Progress may have overwritten the line meanwhile
+    progress << (terminal ? "\r" : "") << line.str();  // a check's Progress may have overwritten the line
     if (result.error.empty())
       progress << to_string(result.outcome.verdict) << " (" << std::fixed << std::setprecision(2) << result.seconds
                << " s)\n";

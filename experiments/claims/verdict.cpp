@@ -29,4 +29,27 @@ std::optional<Verdict> parse_verdict(std::string_view text) {
   return std::nullopt;
 }
 
+namespace {
+constexpr std::array<std::pair<Strength, std::string_view>, 6> strength_names{{
+    {Strength::unstated, "unstated"},
+    {Strength::proved, "proved"},
+    {Strength::exact_counterexample, "exact-counterexample"},
+    {Strength::grid, "grid"},
+    {Strength::sample, "sample"},
+    {Strength::measured, "measured"},
+}};
+}  // namespace
+
+std::string_view to_string(Strength s) {
+  for (const auto& [strength, name] : strength_names)
+    if (strength == s) return name;
+  return "?";
+}
+
+std::optional<Strength> parse_strength(std::string_view text) {
+  for (const auto& [strength, name] : strength_names)
+    if (name == text) return strength;
+  return std::nullopt;
+}
+
 }  // namespace affinterp::claims

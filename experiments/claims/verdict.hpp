@@ -19,4 +19,19 @@ enum class Verdict {
 std::string_view to_string(Verdict v);
 std::optional<Verdict> parse_verdict(std::string_view text);
 
+/// How strong a verdict is: every check states it, and the report shows it beside the verdict.
+enum class Strength {
+  unstated,              ///< the check has not said (the pinned-verdict test fails on it)
+  proved,                ///< decided for all reals: the claim, and its correction if any, by two independent
+                         ///< deciders (Outcome::proof), or an identity by two independent checkers
+  exact_counterexample,  ///< fails at an exact counterexample anyone can re-verify; a correction, if any, is
+                         ///< checked on the stated grid or sample only
+  grid,                  ///< checked on the stated grid only
+  sample,                ///< checked on the stated random sample only
+  measured,              ///< a measured figure, with its spread over repeated runs
+};
+
+std::string_view to_string(Strength s);
+std::optional<Strength> parse_strength(std::string_view text);
+
 }  // namespace affinterp::claims

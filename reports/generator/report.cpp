@@ -57,13 +57,44 @@ std::string figure_link(const json& figures) {
   return "";
 }
 
+/// How strong a verdict is, in the words of the report's "Strength" list.
+std::string strength_words(const std::string& strength) {
+  if (strength == "proved") return "proved for all reals";
+  if (strength == "exact-counterexample") return "exact counterexample";
+  if (strength == "grid") return "grid only";
+  if (strength == "sample") return "sample only";
+  if (strength == "measured") return "measured";
+  return "not stated";
+}
+
+/// The sentences of a proof with each decider's result and the files to rerun them with.
+void write_proof(std::ostringstream& md, const json& proof) {
+  md << "**Proof for all reals.** Scope: " << proof.value("scope", "") << ". Method: " << proof.value("method", "")
+     << ". Decided by";
+  for (const auto& tool : proof["checked_by"]) md << " " << tool.get<std::string>();
+  md << ".\n\n| sentence | meaning | result | runs |\n|---|---|---|---|\n";
+  for (const auto& s : proof["sentences"]) {
+    std::string runs;
+    for (const auto& r : s["runs"]) {
+      std::ostringstream one;
+      one.precision(2);
+      one << std::fixed << r.value("tool", "") << ": [" << r.value("result", "") << "](" << r.value("file", "") << ") "
+          << r.value("seconds", 0.0) << " s";
+      runs += (runs.empty() ? "" : "; ") + one.str();
+    }
+    md << "| " << cell(s.value("name", "")) << " | " << cell(s.value("meaning", "")) << " | " << s.value("result", "")
+       << " | " << cell(runs) << " |\n";
+  }
+  md << "\n";
+}
+
 void write_summary_table(std::ostringstream& md, const json& claims) {
-  md << "| ID | claim | verdict | evidence | figure |\n|---|---|---|---|---|\n";
+  md << "| ID | claim | verdict | strength | evidence | figure |\n|---|---|---|---|---|---|\n";
   for (const auto& c : claims) {
     const std::string id = c["id"];
     md << "| [`" << id << "`](#" << anchor(id) << ") | " << cell(c["statement"]) << " | **"
-       << c["verdict"].get<std::string>() << "** | " << cell(one_line_evidence(c["evidence"])) << " | "
-       << figure_link(c["figures"]) << " |\n";
+       << c["verdict"].get<std::string>() << "** | " << strength_words(c.value("strength", "unstated")) << " | "
+       << cell(one_line_evidence(c["evidence"])) << " | " << figure_link(c["figures"]) << " |\n";
   }
 }
 
@@ -80,6 +111,7 @@ void write_claim_section(std::ostringstream& md, const json& c) {
   if (!c["counterexample"].is_null())
     md << "**Counterexample** (exact values as \"p/q\"):\n\n```json\n" << c["counterexample"].dump(2) << "\n```\n\n";
   if (!c["correction"].is_null()) md << "**Correction.** " << c["correction"].get<std::string>() << "\n\n";
+  if (c.contains("proof") && c["proof"].is_object()) write_proof(md, c["proof"]);
   for (const auto& f : c["figures"]) {
     const std::string path = f.get<std::string>();
     if (path.ends_with(".png")) md << "![" << id << "](" << path << ")\n\n";
@@ -146,7 +178,16 @@ std::string render_markdown(const json& doc) {
         "- **corrected**: fails as printed, holds after the stated correction.\n"
         "- **reproduced** / **not-reproduced**: a measured figure compared with the paper's.\n"
         "- **inconclusive**: not decided; the finding says why.\n"
-        "- **pending**: no check implemented yet.\n";
+        "- **pending**: no check implemented yet.\n\n"
+        "## Strength\n\n"
+        "- **proved for all reals**: the claim (and its correction, if any) is a first-order sentence over the "
+        "reals decided by two independent deciders (QEPCAD B and Z3), or a polynomial identity checked by two "
+        "independent checkers; the sentence files are in `proofs/` and rerun with the tool alone.\n"
+        "- **exact counterexample**: the printed claim fails at an exact (rational) point anyone can re-verify; a "
+        "correction, if any, is checked on a grid or sample only.\n"
+        "- **grid only** / **sample only**: checked on the stated grid or random sample (size, seed and "
+        "tolerance in the evidence), not proved.\n"
+        "- **measured**: a measured figure, with the spread of repeated runs.\n";
 
   std::string group;
   for (const auto& c : claims) {

@@ -13,6 +13,7 @@ const ClaimDeclaration claim{{
     .where = "Kaji §4",
     .statement = "The Alexa et al. constraint as printed, ‖(1−t)p1 + t p1 − v1(t)‖², with E^F yields an interpolation "
                  "that reaches the target, B(1) p_k = q_k.",
+    .strength = Strength::exact_counterexample,
     .check = check,
 }};
 

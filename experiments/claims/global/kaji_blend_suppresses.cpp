@@ -22,6 +22,7 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::global,
     .where = "Kaji §4",
     .statement = "In the blend w E^F + (1−w) E^R, a large w suppresses a triangle's rotation and scaling.",
+    .strength = Strength::sample,
     .check = check,
 }};
 

@@ -13,6 +13,7 @@ const ClaimDeclaration claim{{
     .where = "Kaji §4",
     .statement =
         "The global E^F error is translation invariant, and a constraint of two dimensions makes its minimiser unique.",
+    .strength = Strength::sample,
     .check = check,
 }};
 

@@ -12,6 +12,7 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::global,
     .where = "Kaji Appendix",
     .statement = "min over s, δ of ‖s R_δ A − B‖²_F equals ‖B‖² − (‖B Aᵀ‖² + 2 det(B Aᵀ)) / ‖A‖².",
+    .strength = Strength::sample,
     .check = check,
 }};
 

@@ -14,6 +14,7 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::global,
     .where = "Kaji §4, Appendix",
     .statement = "E^R is a positive definite quadratic form in the entries of B.",
+    .strength = Strength::exact_counterexample,
     .check = check,
 }};
 

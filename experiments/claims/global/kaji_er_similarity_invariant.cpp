@@ -12,6 +12,7 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::global,
     .where = "Kaji §4",
     .statement = "E^R(A, B) does not change when A is replaced by s R_δ A.",
+    .strength = Strength::sample,
     .check = check,
 }};
 

@@ -16,6 +16,7 @@ const ClaimDeclaration claim{{
     .where = "Kaji Figs 2, 4",
     .statement =
         "Under vertex-locus constraints, E^F shrinks and flips triangles in intermediate frames where E^R does not.",
+    .strength = Strength::sample,
     .check = check,
 }};
 

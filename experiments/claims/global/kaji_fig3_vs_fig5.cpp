@@ -16,6 +16,7 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::global,
     .where = "Kaji Figs 3, 5",
     .statement = "When local rotations must exceed π, E^F does not interpolate smoothly while E^R does.",
+    .strength = Strength::sample,
     .check = check,
 }};
 

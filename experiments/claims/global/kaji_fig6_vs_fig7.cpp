@@ -21,6 +21,7 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::global,
     .where = "Kaji Figs 6, 7",
     .statement = "Weighting E^R by triangle area keeps large triangles more rigid than unweighted E^R.",
+    .strength = Strength::sample,
     .check = check,
 }};
 

@@ -13,6 +13,7 @@ const ClaimDeclaration claim{{
     .where = "Kaji Appendix",
     .statement = "The matrix G of the global quadratic form is the same at every t, so one factorisation serves all "
                  "frames; decided separately for E^F, E^R, their blend and the symmetrised energy.",
+    .strength = Strength::exact_counterexample,
     .check = check,
 }};
 

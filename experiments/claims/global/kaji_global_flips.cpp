@@ -17,6 +17,7 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::global,
     .where = "Kaji §5",
     .statement = "Unlike the local exp-log homotopy, the global interpolation can flip triangles.",
+    .strength = Strength::sample,
     .check = check,
 }};
 

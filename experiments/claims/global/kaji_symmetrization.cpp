@@ -20,6 +20,7 @@ const ClaimDeclaration claim{{
     .where = "Kaji §4",
     .statement =
         "With E′(t) = E(t) + E^{−1}(1−t), exchanging source and target and t with 1−t gives the same vertex paths.",
+    .strength = Strength::sample,
     .check = check,
 }};
 

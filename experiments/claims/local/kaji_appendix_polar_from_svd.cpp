@@ -16,6 +16,7 @@ const ClaimDeclaration claim{{
     .where = "Kaji Appendix",
     .statement = "Given the SVD A = R_α D R_β, the polar factors are R_θ = R_{α+β} and S = R_{−β} D R_β, and S^t = "
                  "R_{−β} D^t R_β.",
+    .strength = Strength::grid,
     .check = check,
 }};
 

@@ -16,6 +16,7 @@ const ClaimDeclaration claim{{
     .where = "Kaji eq. (1)",
     .statement = "The product of the target-vertex matrix and the inverse source-vertex matrix sends each source "
                  "vertex to its target vertex and has bottom row (0, 0, 1).",
+    .strength = Strength::sample,
     .check = check,
 }};
 

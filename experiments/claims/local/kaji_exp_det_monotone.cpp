@@ -17,6 +17,7 @@ const ClaimDeclaration claim{{
     .where = "Kaji §3",
     .statement = "The exp-log homotopy's determinant is monotone in t: its derivative is identically zero when λ1λ2 = "
                  "1 and nowhere zero otherwise.",
+    .strength = Strength::grid,
     .check = check,
 }};
 

@@ -16,6 +16,7 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::local,
     .where = "Kaji §3",
     .statement = "The exp-log homotopy has positive determinant for every real t.",
+    .strength = Strength::grid,
     .check = check,
 }};
 

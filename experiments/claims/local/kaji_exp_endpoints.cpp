@@ -14,6 +14,7 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::local,
     .where = "Kaji eq. (3)",
     .statement = "The exp-log homotopy R_θ^t S^t equals I at t = 0 and A at t = 1.",
+    .strength = Strength::grid,
     .check = check,
 }};
 

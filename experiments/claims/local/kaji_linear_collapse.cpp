@@ -16,6 +16,7 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::local,
     .where = "Kaji §3",
     .statement = "For A = −I the linear homotopy (1−t)I + tA is the zero matrix at t = 1/2.",
+    .strength = Strength::grid,
     .check = check,
 }};
 

@@ -17,6 +17,7 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::local,
     .where = "Kaji §3",
     .statement = "Unless both singular values equal 1, the polar homotopy's determinant is negative at some real t.",
+    .strength = Strength::exact_counterexample,
     .check = check,
 }};
 

@@ -18,6 +18,7 @@ const ClaimDeclaration claim{{
     .where = "Kaji §3",
     .statement = "The determinant of the polar (Alexa) homotopy R_{tθ}((1−t)I + tS) factors as ((λ1−1)t+1)((λ2−1)t+1), "
                  "with λ1, λ2 the singular values of A.",
+    .strength = Strength::grid,
     .check = check,
 }};
 

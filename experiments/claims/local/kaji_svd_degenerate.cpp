@@ -17,6 +17,7 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::local,
     .where = "Kaji §3",
     .statement = "The SVD-based homotopies of Alexa et al. can also reach a zero determinant at some real t.",
+    .strength = Strength::grid,
     .check = check,
 }};
 

@@ -18,6 +18,7 @@ const ClaimDeclaration claim{{
     .where = "thesis §2.2.4",
     .statement = "The worked example's A, its SVD R_{π/3} diag(2,1) R_{−5π/3} and polar form R_{−4π/3} S are correct; "
                  "linear interpolation is good for neither area nor norm, SVD for area, polar for both.",
+    .strength = Strength::grid,
     .check = check,
 }};
 

@@ -21,6 +21,7 @@ const ClaimDeclaration claim{{
     .where = "thesis Thm 2.2.1",
     .statement = "Linear interpolation is good for area exactly when tr A ≥ det A + 1, or 2 det A ≤ tr A < 2, or 2 ≤ "
                  "tr A < 2 det A.",
+    .strength = Strength::exact_counterexample,
     .check = check,
 }};
 

@@ -26,6 +26,7 @@ const ClaimDeclaration claim{{
     .where = "thesis Thm 2.2.3",
     .statement = "SVD interpolation R_{tα}((1−t)I + tD)R_{tβ}, D = diag(x, y), is good for norm exactly when x, y are "
                  "both ≥ 1 or both in (0, 1].",
+    .strength = Strength::exact_counterexample,
     .check = check,
 }};
 

@@ -18,6 +18,7 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::local,
     .where = "thesis Thm 2.2.4",
     .statement = "Polar interpolation is good for area exactly when Thm 2.2.1's condition holds with tr S for tr A.",
+    .strength = Strength::exact_counterexample,
     .check = check,
 }};
 

@@ -20,6 +20,7 @@ const ClaimDeclaration claim{{
     .where = "thesis Thm 2.2.5",
     .statement = "Polar interpolation with S = [[x, h], [h, y]] is good for norm exactly when (x−1)(y−1) ≥ h² and (x + "
                  "y ≥ 2 or both x, y in (0, 1]).",
+    .strength = Strength::grid,
     .check = check,
 }};
 

@@ -17,6 +17,7 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::local,
     .where = "thesis Thm 2.2.6",
     .statement = "SVD interpolation is good for area if and only if polar interpolation is.",
+    .strength = Strength::grid,
     .check = check,
 }};
 

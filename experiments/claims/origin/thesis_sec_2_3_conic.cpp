@@ -21,6 +21,7 @@ const ClaimDeclaration claim{{
     .where = "thesis §2.3, Fig 2.6",
     .statement =
         "The origins o = (x, y) at which min E1 = min E2(o, o) lie on the conic x² − 4xy + y² + x + y − 1/4 = 0.",
+    .strength = Strength::exact_counterexample,
     .check = check,
 }};
 

@@ -20,6 +20,7 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::origin,
     .where = "thesis §2.3",
     .statement = "The printed A1, A2 (origin o = (x, y)) and B1, B2 describe the two-triangle configuration.",
+    .strength = Strength::exact_counterexample,
     .check = check,
 }};
 

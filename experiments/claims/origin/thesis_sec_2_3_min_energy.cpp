@@ -16,6 +16,7 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::origin,
     .where = "thesis §2.3",
     .statement = "min E2(o, o) = (2 + (x−1)x + (y−1)y) / (x² + 2xy + y² − 2x − 2y + 3).",
+    .strength = Strength::grid,
     .check = check,
 }};
 

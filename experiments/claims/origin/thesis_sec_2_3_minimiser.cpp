@@ -19,6 +19,7 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::origin,
     .where = "thesis §2.3",
     .statement = "The printed minimiser v1 … v4 as functions of (x, y) is correct.",
+    .strength = Strength::grid,
     .check = check,
 }};
 

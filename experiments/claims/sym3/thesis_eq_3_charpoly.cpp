@@ -13,6 +13,7 @@ const ClaimDeclaration claim{{
     .where = "thesis §3.2",
     .statement =
         "For symmetric 3×3 S the characteristic polynomial is x³ − (tr S)x² + ((tr S)² − ‖S‖²_F)/2 · x − det S.",
+    .strength = Strength::grid,
     .check = check,
 }};
 

@@ -28,6 +28,7 @@ const ClaimDeclaration claim{{
     .where = "thesis §3.4",
     .statement = "Treating eigenvalues closer than 10⁻⁶ as equal, the improved spectral decomposition is accurate to "
                  "10⁻⁶ for eigenvalues in [0, 3].",
+    .strength = Strength::exact_counterexample,
     .check = check,
 }};
 

@@ -17,6 +17,7 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::sym3,
     .where = "thesis §3.4, Fig 3.2",
     .statement = "Improved SD is about 4.2× faster than diagonalisation, with plain SD in between.",
+    .strength = Strength::measured,
     .check = check,
 }};
 

@@ -13,6 +13,7 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::sym3,
     .where = "thesis §3.1.2",
     .statement = "With a triple eigenvalue, exp S = e^{λ1} I.",
+    .strength = Strength::grid,
     .check = check,
 }};
 

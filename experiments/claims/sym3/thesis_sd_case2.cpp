@@ -14,6 +14,7 @@ const ClaimDeclaration claim{{
     .where = "thesis §3.1.2",
     .statement = "With exactly two equal eigenvalues, the printed coefficients x = 0, y = s − t, z = tλ2 − sλ3 give "
                  "exp S = xS² + yS + zI.",
+    .strength = Strength::grid,
     .check = check,
 }};
 

@@ -17,6 +17,7 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::sym3,
     .where = "thesis §3.1.2",
     .statement = "With distinct eigenvalues, the printed x = s + t + u, y, z (and s, t, u) give exp S = xS² + yS + zI.",
+    .strength = Strength::exact_counterexample,
     .check = check,
 }};
 

@@ -19,6 +19,7 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::sym3,
     .where = "thesis §3.2",
     .statement = "Viète's trigonometric formula with the printed r, k, p, q gives the eigenvalues λ_k.",
+    .strength = Strength::grid,
     .check = check,
 }};
 
