@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace affinterp::global {
 namespace {
@@ -43,6 +44,24 @@ TriangleQuadratic<double> local_error(Energy energy, const TriangleTerm& term, c
       return procrustes_quadratic(term.corners, A) * term.weight;
   }
   return {};
+}
+
+/// E_i(A, B) of one term split into its E^F part and the rest, times the term's weight: the closed forms
+/// of local_error.hpp (E^F, eq. (4)'s E^R as a projection), and E^S = ‖Y‖² − (⟨X, Y⟩² + ⟨JX, Y⟩²)/‖X‖² with
+/// X = A P̃, Y = V Π (procrustes_quadratic).
+std::pair<double, double> local_error_value(Energy energy, const TriangleTerm& term, const Eigen::Matrix2d& A,
+                                            const Eigen::Matrix<double, 2, 3>& V) {
+  if (energy == Energy::procrustes) {
+    const Eigen::Matrix<double, 2, 3> X = A * (term.corners.colwise() - term.corners.rowwise().mean());
+    const Eigen::Matrix<double, 2, 3> Y = V.colwise() - V.rowwise().mean();
+    const double a = frobenius_inner(X, Y), j = frobenius_inner(rotation_J<double>() * X, Y);
+    return {0.0, term.weight * (Y.squaredNorm() - (a * a + j * j) / X.squaredNorm())};
+  }
+  const Eigen::Matrix2d B = V * term.D;  // eq. (1)
+  const double w = term.frobenius_share;
+  const double frobenius = energy == Energy::similarity ? 0.0 : w * frobenius_error(A, B);
+  const double similarity = energy == Energy::frobenius ? 0.0 : (1 - w) * similarity_error_by_projection(A, B);
+  return {term.weight * frobenius, term.weight * similarity};
 }
 
 }  // namespace
@@ -165,6 +184,28 @@ Eigen::VectorXcd FrameAssembly::right_hand_side_at(double t) const {
       u[k] -= 2 * term.weight * alpha_k * std::complex<double>(r.x(), r.y());
   }
   return u * -0.5;
+}
+
+FrameEnergy FrameAssembly::energy_at(double t, const Eigen::Matrix2Xd& v) const {
+  FrameEnergy energy;
+  auto add = [&](const TriangleTerm& term, const Eigen::Matrix2d& A, double& direction) {
+    Eigen::Matrix<double, 2, 3> V;
+    for (std::size_t c = 0; c < 3; ++c) V.col(static_cast<Eigen::Index>(c)) = v.col(term.vertex[c]);
+    const auto [frobenius, similarity] = local_error_value(energy_, term, A, V);
+    energy.frobenius += frobenius, energy.similarity += similarity, direction += frobenius + similarity;
+  };
+  for (std::size_t i = 0; i < forward_terms_.size(); ++i) {
+    const auto k = static_cast<Eigen::Index>(i);
+    add(forward_terms_[i], forward_.at(k, t), energy.forward);
+    if (reverse_) add(reverse_terms_[i], reverse_->at(k, 1 - t), energy.backward);  // E^{-1}(1 − t)
+  }
+  for (const ConstraintTerm& term : constraints_) {  // c ‖Σ α_k v_k − r(t)‖²
+    Eigen::Vector2d l = -term.target(t);
+    for (const auto& [k, alpha_k] : term.coefficients) l += alpha_k * v.col(k);
+    energy.constraints += term.weight * l.squaredNorm();
+  }
+  energy.total = energy.forward + energy.backward + energy.constraints;
+  return energy;
 }
 
 FrameQuadratic FrameAssembly::dense_quadratic_at(double t) const {
