@@ -271,8 +271,15 @@ TEST(InterpolateCli, TimesWritesExactlyThoseFramesWithTheirEnergies) {
     }
     EXPECT_EQ(energies[2], energies[6]) << "the same t, the same frame";
     EXPECT_LT(energies[0], 1e-9 * (1 + energies[2])) << "t = 0 is the source itself";
-    // the viewer plots the energy: its series are in the page
-    EXPECT_NE(read_text(out / "viewer.html").find("E^"), std::string::npos);
+    // the viewer plots the energy and its parts, and `view` reads them back from metrics.json
+    const fs::path page = folder / "view.html";
+    ASSERT_EQ(run_cli("view " + out.string() + " -o " + page.string()).status, 0);
+    std::vector<std::string> series = {"E^" + options.substr(9, options.find(' ', 9) - 9)};
+    if (metrics["frames"][0].contains("energy_parts"))
+      for (const auto& [name, value] : metrics["frames"][0]["energy_parts"].items()) series.push_back(name);
+    for (const fs::path& html : {out / "viewer.html", page})
+      for (const std::string& name : series)
+        EXPECT_NE(read_text(html).find("{\"name\":\"" + name), std::string::npos) << html << ": " << name;
   }
 }
 

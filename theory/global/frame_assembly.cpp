@@ -58,9 +58,9 @@ std::pair<double, double> local_error_value(Energy energy, const TriangleTerm& t
     return {0.0, term.weight * (Y.squaredNorm() - (a * a + j * j) / X.squaredNorm())};
   }
   const Eigen::Matrix2d B = V * term.D;  // eq. (1)
-  const double w = term.frobenius_share;
-  const double frobenius = energy == Energy::similarity ? 0.0 : w * frobenius_error(A, B);
-  const double similarity = energy == Energy::frobenius ? 0.0 : (1 - w) * similarity_error_by_projection(A, B);
+  const double w = energy == Energy::blend ? term.frobenius_share : energy == Energy::frobenius ? 1.0 : 0.0;
+  const double frobenius = w > 0 ? w * frobenius_error(A, B) : 0.0;
+  const double similarity = w < 1 ? (1 - w) * similarity_error_by_projection(A, B) : 0.0;
   return {term.weight * frobenius, term.weight * similarity};
 }
 

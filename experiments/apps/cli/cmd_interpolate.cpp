@@ -190,9 +190,7 @@ void run(const InterpolateOptions& o) {
   std::optional<Progress> progress;  // the frames, then the filmstrip, the GIF and the viewer
   if (long_run) progress.emplace("interpolate", static_cast<std::size_t>(frame_count) + (o.figures ? 3 : 0));
   const std::string energy_name = "E^" + o.energy + (o.symmetric ? " symmetrised" : "");
-  std::vector<plots::FrameSeries> energy_series = {{energy_name, {}}};
-  if (o.energy == "blend") energy_series.push_back({"E^F part", {}}), energy_series.push_back({"E^R part", {}});
-  if (o.symmetric) energy_series.push_back({"E(t)", {}}), energy_series.push_back({"E^-1(1-t)", {}});
+  std::vector<plots::FrameSeries> energy_series = {{energy_name, {}}};  // then the parts, as `view` reads them
   global::Mesh frame = pair.source;  // frames keep the files' face list, clockwise ones included
   if (pair.reoriented) global::reverse_orientation(frame);
   for (int k = 0; k < frame_count; ++k) {
@@ -201,11 +199,14 @@ void run(const InterpolateOptions& o) {
     io::write_obj(frame, staged.staging() / frame_name(k));
     const global::FrameEnergy energy = interpolation->energy_at(t, frame.vertices);
     nlohmann::json entry = {{"index", k}, {"t", t}, {"file", frame_name(k)}, {"energy", finite_or_null(energy.total)}};
-    if (energy_has_parts(options)) entry["energy_parts"] = energy_parts_json(energy, options);
-    std::vector<double> values = {energy.total};
-    if (o.energy == "blend") values.push_back(energy.frobenius), values.push_back(energy.similarity);
-    if (o.symmetric) values.push_back(energy.forward), values.push_back(energy.backward);
-    for (std::size_t s = 0; s < values.size(); ++s) energy_series[s].values.push_back(values[s]);
+    energy_series[0].values.push_back(energy.total);
+    if (energy_has_parts(options)) {
+      entry["energy_parts"] = energy_parts_json(energy, options);
+      if (k == 0)
+        for (const auto& [name, value] : entry["energy_parts"].items()) energy_series.push_back({name, {}});
+      for (std::size_t s = 1; s < energy_series.size(); ++s)
+        energy_series[s].values.push_back(entry["energy_parts"][energy_series[s].name].get<double>());
+    }
     const global::FrameMetrics metrics = global::frame_metrics(pair.source, frame.vertices);
     entry.update(metrics_json(metrics));
     frames.push_back(entry);
