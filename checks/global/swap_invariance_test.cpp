@@ -1,12 +1,14 @@
 // With default options the symmetrised interpolation does not depend on which mesh comes first: (P, Q) at t
 // equals (Q, P) at 1 − t, frames and energy, for every local error (gauge.hpp), on random compatible pairs
 // (experiments/inputs/shapes/random_pair.hpp: a random affine map with any rotation, plus per-vertex offsets).
-#include "experiments/inputs/shapes/random_pair.hpp"
+#include "experiments/inputs/shapes/catalogue.hpp"
 #include "theory/global/gauge.hpp"
 #include "theory/global/interpolation.hpp"
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
+
+#include <numbers>
 
 namespace affinterp::global {
 namespace {
@@ -45,6 +47,8 @@ RC_GTEST_PROP(SwapInvariance, SymmetrisedFramesDoNotDependOnWhichMeshComesFirst,
     RC_ASSERT(std::minmax(a.i, a.j) == std::minmax(b.i, b.j));
   }
   const Interpolation PQ(P, Q, forward), QP(Q, P, reverse);
+  // the reverse problem's polar angles are −θ_i on the mirrored branches (A_i⁻¹ = R_{−θ} ·)
+  RC_ASSERT((PQ.rotation_angles() + QP.rotation_angles()).cwiseAbs().maxCoeff() < 1e-12);
   const Eigen::Matrix2Xd v = PQ.vertices_at(t), v_swapped = QP.vertices_at(1 - t);
   const double gap = (v - v_swapped).colwise().norm().maxCoeff() / diameter(P, Q);
   RC_LOG() << "seed " << seed << ", max |v - v'| / diameter = " << gap << "\n";
@@ -53,6 +57,21 @@ RC_GTEST_PROP(SwapInvariance, SymmetrisedFramesDoNotDependOnWhichMeshComesFirst,
   RC_ASSERT(std::abs(e.total - e_swapped.total) <= 1e-9 * std::max(1.0, e.total));
   // the two halves trade places: E(t) of (P, Q) is E^{-1}(1 − (1 − t)) of (Q, P)
   RC_ASSERT(std::abs(e.forward - e_swapped.backward) <= 1e-9 * std::max(1.0, e.total));
+}
+
+/// The worm turns its end by 3π: the consistent branches go beyond (−π, π], and the reverse run must take
+/// the mirrored ones for E^F's paths R_{tθ} to match.
+TEST(SwapInvariance, HoldsBeyondHalfATurn) {
+  const auto [P, Q] = shapes::make_shape("worm-curl");
+  for (const Energy energy : {Energy::frobenius, Energy::similarity, Energy::blend}) {
+    const Interpolation PQ(P, Q, symmetric_defaults(energy, 0.5, P, Q)),
+        QP(Q, P, symmetric_defaults(energy, 0.5, Q, P));
+    EXPECT_GT(PQ.rotation_angles().maxCoeff(), 2 * std::numbers::pi);
+    EXPECT_LT((PQ.rotation_angles() + QP.rotation_angles()).cwiseAbs().maxCoeff(), 1e-12);
+    for (const double t : {0.25, 0.5, 0.9})
+      EXPECT_LT((PQ.vertices_at(t) - QP.vertices_at(1 - t)).colwise().norm().maxCoeff() / diameter(P, Q), 1e-9)
+          << to_string(energy) << " t = " << t;
+  }
 }
 
 }  // namespace

@@ -167,18 +167,14 @@ void write_engine_speed(std::ostringstream& md, const json& speed) {
 
 /// How the engine's cost grows with the mesh against the 1M-triangle targets (bench_scale, one run).
 void write_engine_scale(std::ostringstream& md, const json& scale) {
-  md << "## Global engine at scale
-
-        ";
-      if (scale.is_null()) {
-    md << "Not measured: `reports/bench/bench_scale.json` is absent (run `experiments/reproduce.sh`).
-
-          ";
-        return;
+  md << "## Global engine at scale\n\n";
+  if (scale.is_null()) {
+    md << "Not measured: `reports/bench/bench_scale.json` is absent (run `experiments/reproduce.sh`).\n\n";
+    return;
   }
   const json& targets = scale["targets"];
-  md << "`build/bin/bench_scale` on the generated man posed by its \"wave\" skeleton (65k triangles) and that pair "
-        "subdivided 1-to-4 once and twice, with `affinterp interpolate`'s default options, the median of three "
+  md << "`build/bin/bench_scale` on the generated man bent by a curl through one radian (65k triangles) and that "
+        "pair subdivided 1-to-4 once and twice, with `affinterp interpolate`'s default options, the median of three "
         "runs; peak memory is the process's resident high-water mark (getrusage) over each size's benchmarks; "
         "machine: "
      << cell(scale.value("machine", "?")) << "; " << cell(scale.value("compiler", "?")) << ". Targets at "

@@ -1,7 +1,8 @@
 // How the global engine's cost grows with the mesh (issue 12, "Scale"): set-up (local maps, rotation
 // branches, sparsity pattern, symbolic analysis, first factorisation), time per frame for E^F and E^R, and
-// peak memory, on the project's man (meshed by CGAL to 65,326 triangles) posed by its "wave" skeleton, and
-// on that pair subdivided 1-to-4 once and twice (261,304 and 1,045,216 triangles: shapes/subdivide.hpp). The
+// peak memory, on the project's man (meshed by CGAL to 65,326 triangles) bent by a circular curl through one
+// radian along its width (bench_interp's stand-in for the octopus), and on that pair subdivided 1-to-4 once
+// and twice (261,304 and 1,045,216 triangles: shapes/subdivide.hpp). The
 // options are those of `affinterp interpolate`: area weights, the straight barycentre locus, and for E^R the
 // default gauge edge. Peak memory: getrusage's ru_maxrss, its high-water mark reset (Linux
 // /proc/self/clear_refs) before each benchmark builds its Interpolation, so each counter is that
@@ -9,6 +10,7 @@
 // set-up ≤ 5 s, E^F ≤ 0.1 s and E^R ≤ 0.6 s per frame, peak ≤ 2 GB (experiments/claims/engine_scale.hpp).
 // Run with --benchmark_filter to leave out the largest size (it takes minutes).
 #include "experiments/apps/bench/bench_context.hpp"
+#include "experiments/inputs/shapes/curl.hpp"
 #include "experiments/inputs/shapes/man.hpp"
 #include "experiments/inputs/shapes/subdivide.hpp"
 #include "theory/global/gauge.hpp"
@@ -26,12 +28,16 @@ namespace {
 
 using global::Energy;
 
-/// The man posed by "wave", subdivided `levels` times; built once per level.
+/// The curled man, subdivided `levels` times; built once per level.
 const shapes::MeshPairShapes& workload(int levels) {
   static std::vector<shapes::MeshPairShapes> pairs = [] {
     shapes::MeshPairShapes pair{shapes::man(0.0137), {}};
+    const Eigen::Vector2d low = pair.source.vertices.rowwise().minCoeff(),
+                          high = pair.source.vertices.rowwise().maxCoeff();
+    const Eigen::Vector2d centre_left(low.x(), (low.y() + high.y()) / 2);
     pair.target = pair.source;
-    pair.target.vertices = shapes::pose_vertices(pair.source.vertices, shapes::man_poses().front());
+    pair.target.vertices = shapes::Curl{high.x() - low.x(), 1.0, 1}.apply(
+        Eigen::Matrix2Xd(pair.source.vertices.colwise() - centre_left), 1);
     return std::vector{pair};
   }();
   while (static_cast<int>(pairs.size()) <= levels) pairs.push_back(shapes::subdivided(pairs.back()));
