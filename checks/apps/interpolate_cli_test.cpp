@@ -224,7 +224,7 @@ TEST(InterpolateCli, RefusesBadInputsLeavingOutUntouched) {
   expect_refused(pair("s.obj", "t.obj") + " --energy blend --weights " + (d / "w.txt").string(), 1,
                  "1 weights for 2 triangles");
   expect_refused(pair("s.obj", "t.obj") + " --frames 1", 2, "--frames");
-  for (const std::string list : {"''", "0,,1", "0,1,", "a", "0;1", "1e999", "0.5x", "nan"})
+  for (const std::string list : {"''", "0,,1", "0,1,", "a", "'0;1'", "1e999", "0.5x", "nan"})
     expect_refused(pair("s.obj", "t.obj") + " --times " + list, 2,
                    "expected finite reals separated by commas (e.g. 0,0.1,0.5,1)", "");
   expect_refused(pair("s.obj", "t.obj") + " --times 0,1", 2, "--times", " --frames 3");
@@ -241,7 +241,7 @@ TEST(InterpolateCli, TimesWritesExactlyThoseFramesWithTheirEnergies) {
   const std::string io =
       " --source " + (folder / "source.obj").string() + " --target " + (folder / "target.obj").string();
   const std::vector<double> times = {0, 0.1, 0.5, 1, -0.25, 1.5, 0.5};
-  for (const std::string& options :
+  for (const std::string options :
        {"--energy R", "--energy F", "--energy blend --symmetric", "--energy S --symmetric"}) {
     SCOPED_TRACE(options);
     const fs::path out = folder / "out";
@@ -265,9 +265,12 @@ TEST(InterpolateCli, TimesWritesExactlyThoseFramesWithTheirEnergies) {
       if (!frame.contains("energy_parts")) continue;
       const auto& parts = frame["energy_parts"];
       const double C = parts["C"].get<double>();
-      if (blend) EXPECT_NEAR(parts["E_F"].get<double>() + parts["E_R"].get<double>() + C, energy, 1e-9 * (1 + energy));
-      if (symmetric)
+      if (blend) {
+        EXPECT_NEAR(parts["E_F"].get<double>() + parts["E_R"].get<double>() + C, energy, 1e-9 * (1 + energy));
+      }
+      if (symmetric) {
         EXPECT_NEAR(parts["forward"].get<double>() + parts["backward"].get<double>() + C, energy, 1e-9 * (1 + energy));
+      }
     }
     EXPECT_EQ(energies[2], energies[6]) << "the same t, the same frame";
     EXPECT_LT(energies[0], 1e-9 * (1 + energies[2])) << "t = 0 is the source itself";
@@ -312,9 +315,17 @@ TEST(InterpolateCli, SymmetricIsSwapInvariantWithDefaultOptions) {
                       (folder / "QP").string())
                   .status,
               0);
-    EXPECT_LT(largest_gap(folder / "PQ", folder / "QP", 4), 1e-9);
+    // "To rounding": within the engine's own accuracy, which its frame at t = 0 shows (it should be P
+    // exactly; E^S's solves on this mesh are off by about 1e-9 of the diagonal, the others by about 1e-12).
+    // A source-dependent gauge edge gave 8e-4 on man0/man1.
+    fs::create_directories(folder / "P");
+    fs::copy_file(folder / "source.obj", folder / "P" / "frame_0000.obj", fs::copy_options::overwrite_existing);
+    const double accuracy = largest_gap(folder / "PQ", folder / "P", 1);
+    EXPECT_LT(largest_gap(folder / "PQ", folder / "QP", 4), 1e-11 + 10 * accuracy) << "engine accuracy " << accuracy;
     const nlohmann::json a = read_json(folder / "PQ" / "metrics.json"), b = read_json(folder / "QP" / "metrics.json");
-    if (energy != "F") EXPECT_EQ(a["options"]["default_edge_direction"], b["options"]["default_edge_direction"]);
+    if (energy != "F") {
+      EXPECT_EQ(a["options"]["default_edge_direction"], b["options"]["default_edge_direction"]);
+    }
     for (std::size_t k = 0; k < 4; ++k)
       EXPECT_NEAR(a["frames"][k]["energy"].get<double>(), b["frames"][k]["energy"].get<double>(),
                   1e-9 * (1 + a["frames"][k]["energy"].get<double>()));

@@ -46,9 +46,15 @@ TEST(FrameEnergy, IsTheMinimisedFormAndItsPartsAddUp) {
           EXPECT_NEAR(e.total, quadratic_value(q, v), 1e-9 * scale);
           EXPECT_NEAR(e.total, e.forward + e.backward + e.constraints, 1e-12 * scale);
           EXPECT_NEAR(e.forward + e.backward, e.frobenius + e.similarity, 1e-12 * scale);
-          if (!symmetric) EXPECT_EQ(e.backward, 0.0);
-          if (energy == Energy::frobenius) EXPECT_EQ(e.similarity, 0.0);
-          if (energy == Energy::similarity || energy == Energy::procrustes) EXPECT_EQ(e.frobenius, 0.0);
+          if (!symmetric) {
+            EXPECT_EQ(e.backward, 0.0);
+          }
+          if (energy == Energy::frobenius) {
+            EXPECT_EQ(e.similarity, 0.0);
+          }
+          if (energy == Energy::similarity || energy == Energy::procrustes) {
+            EXPECT_EQ(e.frobenius, 0.0);
+          }
           for (unsigned seed = 1; seed <= 3; ++seed) {
             const Eigen::Matrix2Xd other = jiggled(v, 0.1, seed);
             const double value = interpolation.energy_at(t, other).total;

@@ -46,21 +46,28 @@ TriangleQuadratic<double> local_error(Energy energy, const TriangleTerm& term, c
   return {};
 }
 
-/// E_i(A, B) of one term split into its E^F part and the rest, times the term's weight: the closed forms
-/// of local_error.hpp (E^F, eq. (4)'s E^R as a projection), and E^S = ‖Y‖² − (⟨X, Y⟩² + ⟨JX, Y⟩²)/‖X‖² with
-/// X = A P̃, Y = V Π (procrustes_quadratic).
+/// ‖Y − (⟨X, Y⟩ X + ⟨JX, Y⟩ JX)/‖X‖²‖²: the residual of projecting Y onto span{X, JX} (⟨X, JX⟩ = 0,
+/// ‖JX‖ = ‖X‖), which is min_{s,δ} ‖s R_δ X − Y‖² (Kaji Appendix). Written as a residual rather than as
+/// ‖Y‖² − (⟨X, Y⟩² + ⟨JX, Y⟩²)/‖X‖², it is never negative, also where Y is nearly a similarity of X.
+template <class Matrix>
+double similarity_residual(const Matrix& X, const Matrix& Y) {
+  const Matrix JX = rotation_J<double>() * X;
+  return (Y - (frobenius_inner(X, Y) * X + frobenius_inner(JX, Y) * JX) / X.squaredNorm()).squaredNorm();
+}
+
+/// E_i(A, B) of one term split into its E^F part and the rest, times the term's weight: E^F = ‖A − B‖², eq. (4)'s
+/// E^R = min ‖s R_δ A − B‖², and E^S = min ‖s R_δ X − Y‖² with X = A P̃, Y = V Π (procrustes_quadratic).
 std::pair<double, double> local_error_value(Energy energy, const TriangleTerm& term, const Eigen::Matrix2d& A,
                                             const Eigen::Matrix<double, 2, 3>& V) {
   if (energy == Energy::procrustes) {
     const Eigen::Matrix<double, 2, 3> X = A * (term.corners.colwise() - term.corners.rowwise().mean());
     const Eigen::Matrix<double, 2, 3> Y = V.colwise() - V.rowwise().mean();
-    const double a = frobenius_inner(X, Y), j = frobenius_inner(rotation_J<double>() * X, Y);
-    return {0.0, term.weight * (Y.squaredNorm() - (a * a + j * j) / X.squaredNorm())};
+    return {0.0, term.weight * similarity_residual(X, Y)};
   }
   const Eigen::Matrix2d B = V * term.D;  // eq. (1)
   const double w = energy == Energy::blend ? term.frobenius_share : energy == Energy::frobenius ? 1.0 : 0.0;
   const double frobenius = w > 0 ? w * frobenius_error(A, B) : 0.0;
-  const double similarity = w < 1 ? (1 - w) * similarity_error_by_projection(A, B) : 0.0;
+  const double similarity = w < 1 ? (1 - w) * similarity_residual(A, B) : 0.0;
   return {term.weight * frobenius, term.weight * similarity};
 }
 

@@ -41,7 +41,7 @@ struct InterpolateOptions {
   std::vector<std::string> pins, loci, edges;
   std::string barycentre = "linear";
   std::string time_range = "0:1";
-  std::string times;  ///< --times T1,T2,...: exactly these frames (instead of --frames and --time-range)
+  std::optional<std::string> times;  ///< --times T1,T2,...: exactly these frames (not with --frames, --time-range)
 };
 
 /// Frames drawn in the filmstrip: at most 8, evenly spread, first and last included.
@@ -77,7 +77,7 @@ std::vector<double> parse_times(const std::string& text) {
 
 /// The frames' times: --times as given, else --frames N evenly over --time-range.
 std::vector<double> frame_times(const InterpolateOptions& o) {
-  if (!o.times.empty()) return parse_times(o.times);
+  if (o.times) return parse_times(*o.times);
   if (o.frames < 2) throw CommandFailed("--frames must be at least 2", usage_error);
   const auto [t0, t1] = parse_time_range(o.time_range);
   std::vector<double> times;
@@ -233,7 +233,7 @@ void run(const InterpolateOptions& o) {
                                {"edge_directions", o.edges},
                                {"barycentre_locus", o.barycentre},
                                {"time_range", {options.t_begin, options.t_end}},
-                               {"times", o.times.empty() ? nlohmann::json(nullptr) : nlohmann::json(times)}}},
+                               {"times", o.times ? nlohmann::json(times) : nlohmann::json(nullptr)}}},
                              {"frames", frames}};
   if (default_edge)
     document["options"]["default_edge_direction"] =
