@@ -39,7 +39,10 @@ std::vector<std::string> draw_cost_curve(const RunSettings& settings, const nloh
       "set title 'global engine: cost against mesh size (bench\\_scale)'\n"
       "set arrow from graph 0, first 5000 to graph 1, first 5000 nohead dt 2 lc rgb '#888888'\n"
       "set arrow from graph 0, first 600 to graph 1, first 600 nohead dt 3 lc rgb '#888888'\n"
-      "set arrow from graph 0, first 100 to graph 1, first 100 nohead dt 4 lc rgb '#888888'\n" +
+      "set arrow from graph 0, first 100 to graph 1, first 100 nohead dt 4 lc rgb '#888888'\n"
+      "set label 'set-up target at 1M' at graph 0.7, first 5000 offset 0,0.6 tc rgb '#666666'\n"
+      "set label 'E^R frame target' at graph 0.7, first 600 offset 0,0.6 tc rgb '#666666'\n"
+      "set label 'E^F frame target' at graph 0.7, first 100 offset 0,0.6 tc rgb '#666666'\n" +
       plot + "\n");
   return RunSettings::figure_refs(figure.render());
 }
@@ -49,6 +52,7 @@ std::vector<std::string> draw_cost_curve(const RunSettings& settings, const nloh
 nlohmann::json engine_scale(const std::filesystem::path& bench_file, const RunSettings& settings) {
   const std::optional<BenchResults> times = read_bench_results(bench_file, "real_time");
   if (!times) return nullptr;
+  const std::optional<BenchResults> cpu = read_bench_results(bench_file, "cpu_time");
   const std::optional<BenchResults> peaks = read_bench_results(bench_file, "peak_MB");
   // scale_<setup|frame>/<energy>/<triangles>
   std::map<double, nlohmann::json> by_size;
@@ -60,12 +64,14 @@ nlohmann::json engine_scale(const std::filesystem::path& bench_file, const RunSe
     nlohmann::json& row = by_size[triangles];
     row["triangles"] = triangles;
     row[kind + "_" + energy + "_ms"] = ms;
+    if (const auto cpu_ms = cpu ? (*cpu)[name] : std::nullopt) row[kind + "_" + energy + "_cpu_ms"] = *cpu_ms;
     if (const auto peak = peaks ? (*peaks)[name] : std::nullopt)
       row["peak_MB"] = std::max(row.value("peak_MB", 0.0), *peak);
   }
   nlohmann::json rows = nlohmann::json::array();
   for (auto& [triangles, row] : by_size) {
-    for (const char* key : {"setup_F_ms", "setup_R_ms", "frame_F_ms", "frame_R_ms", "peak_MB"})
+    for (const char* key : {"setup_F_ms", "setup_R_ms", "frame_F_ms", "frame_R_ms", "setup_F_cpu_ms", "setup_R_cpu_ms",
+                            "frame_F_cpu_ms", "frame_R_cpu_ms", "peak_MB"})
       if (!row.contains(key)) row[key] = nullptr;
     rows.push_back(row);
   }

@@ -12,10 +12,11 @@
 namespace affinterp::claims {
 
 /// {"file", "machine", "compiler", "flags", "rows": [{"triangles", "setup_F_ms", "setup_R_ms", "frame_F_ms",
-/// "frame_R_ms", "peak_MB"}] (ascending size; null: not measured), "targets": {"triangles", "setup_ms",
-/// "frame_F_ms", "frame_R_ms", "peak_MB"}, "met" (null when no size reaches the targets' 1M triangles, else
-/// whether the largest such size meets all four), "figures" (the drawn cost curve, when `settings` draws
-/// figures)}; null when `bench_file` does not exist.
+/// "frame_R_ms" (wall-clock), the same with "_cpu_ms" (the process's CPU time: close to the wall-clock on an
+/// idle machine, as the engine runs on one thread), "peak_MB"}] (ascending size; null: not measured), "targets":
+/// {"triangles", "setup_ms", "frame_F_ms", "frame_R_ms", "peak_MB"}, "met" (null when no size reaches the targets' 1M
+/// triangles, else whether the largest such size meets all four, on wall-clock times), "figures" (the drawn cost curve,
+/// when `settings` draws figures)}; null when `bench_file` does not exist.
 nlohmann::json engine_scale(const std::filesystem::path& bench_file, const RunSettings& settings);
 
 }  // namespace affinterp::claims

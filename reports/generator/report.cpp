@@ -175,7 +175,9 @@ void write_engine_scale(std::ostringstream& md, const json& scale) {
   const json& targets = scale["targets"];
   md << "`build/bin/bench_scale` on the generated man bent by a curl through one radian (65k triangles) and that "
         "pair subdivided 1-to-4 once and twice, with `affinterp interpolate`'s default options, the median of three "
-        "runs; peak memory is the process's resident high-water mark (getrusage) over each size's benchmarks; "
+        "runs; wall-clock times, with the CPU time in brackets (the engine runs on one thread, so the two agree on "
+        "an idle machine; a larger wall-clock time means a shared machine); peak memory is the process's resident "
+        "high-water mark (getrusage) over each size's benchmarks; "
         "machine: "
      << cell(scale.value("machine", "?")) << "; " << cell(scale.value("compiler", "?")) << ". Targets at "
      << fixed(targets["triangles"], 0) << " triangles: set-up ≤ " << fixed(targets["setup_ms"], 0) << " ms, E^F ≤ "
@@ -186,10 +188,13 @@ void write_engine_scale(std::ostringstream& md, const json& scale) {
                                     : "**not met**")
      << ".\n\n| triangles | set-up E^F (ms) | set-up E^R (ms) | frame E^F (ms) | frame E^R (ms) | peak (MB) |\n"
         "|---|---|---|---|---|---|\n";
+  const auto both = [](const json& row, const std::string& key, int digits) {
+    return fixed(row[key + "_ms"], digits) + " (" + fixed(row.value(key + "_cpu_ms", json()), digits) + ")";
+  };
   for (const auto& row : scale["rows"])
-    md << "| " << fixed(row["triangles"], 0) << " | " << fixed(row["setup_F_ms"], 0) << " | "
-       << fixed(row["setup_R_ms"], 0) << " | " << fixed(row["frame_F_ms"], 1) << " | " << fixed(row["frame_R_ms"], 1)
-       << " | " << fixed(row["peak_MB"], 0) << " |\n";
+    md << "| " << fixed(row["triangles"], 0) << " | " << both(row, "setup_F", 0) << " | " << both(row, "setup_R", 0)
+       << " | " << both(row, "frame_F", 1) << " | " << both(row, "frame_R", 1) << " | " << fixed(row["peak_MB"], 0)
+       << " |\n";
   md << "\n";
   for (const auto& f : scale.value("figures", json::array()))
     if (f.get<std::string>().ends_with(".png")) md << "![cost against mesh size](" << f.get<std::string>() << ")\n\n";
