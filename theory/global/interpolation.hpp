@@ -8,9 +8,9 @@
 // solving 2 G(t) v = −u(t) — as the n × n complex Hermitian system H(t) z = −ũ(t)/2 of hermitian_form.hpp —
 // with a sparse Cholesky factorisation.
 //
-// This facade includes what its callers need: the options (options.hpp), the error (refused_problem.hpp)
-// the frame's quadratic form (frame_quadratic.hpp) and its value (frame_energy.hpp). The engine's own headers include
-// those, never this.
+// This facade includes what its callers need: the options (options.hpp), the error (refused_problem.hpp),
+// the frame's quadratic form (frame_quadratic.hpp) and its value (frame_energy.hpp). The engine's own
+// headers include those, never this.
 #include "theory/global/frame_energy.hpp"
 #include "theory/global/frame_quadratic.hpp"
 #include "theory/global/mesh.hpp"
