@@ -169,12 +169,11 @@ TEST_F(ViewerInBrowser, ColoursFollowTheChosenMetric) {
     hashes.insert(drawing()[0]["hash"].get<std::uint32_t>());
   }
   EXPECT_EQ(hashes.size(), 4u) << "each metric colours the triangles differently";
-  EXPECT_EQ(browser_->evaluate("document.getElementById('series').options.length"), 6)
-      << "the six per-frame metrics over time";
-  EXPECT_NE(browser_->evaluate("document.getElementById('chart-note').textContent")
-                .get<std::string>()
-                .find("No per-frame energy"),
-            std::string::npos);
+  EXPECT_EQ(browser_->evaluate("document.getElementById('series').options.length"), 7)
+      << "the minimised energy, then the six per-frame metrics over time";
+  EXPECT_EQ(browser_->evaluate("document.getElementById('series').options[0].value"), "energy:E^F")
+      << "interpolate records the energy of each frame (metrics.json's \"energy\")";
+  EXPECT_EQ(browser_->evaluate("document.getElementById('chart-note').textContent"), "");
 }
 
 TEST_F(ViewerInBrowser, CompareShowsTwoRunsOnOneSlider) {

@@ -2,15 +2,18 @@
 // matches its stated geometry; filmstrips draw.
 #include "experiments/inputs/shapes/catalogue.hpp"
 #include "experiments/inputs/shapes/man.hpp"
+#include "experiments/inputs/shapes/subdivide.hpp"
 #include "plots/mesh_strip.hpp"
 #include "theory/global/mesh_validation.hpp"
 #include "theory/global/metrics.hpp"
+#include "theory/global/triangle_map.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <set>
 
 namespace {
 
@@ -38,6 +41,34 @@ TEST(Shapes, EveryPairIsAValidCompatibleInput) {
     EXPECT_FALSE(global::orient_counter_clockwise(pair.source)) << "generated triangles run counter-clockwise";
     EXPECT_TRUE(global::flipped_triangles(pair.target).empty());
     EXPECT_GT(pair.source.triangle_count(), 40);
+  }
+}
+
+TEST(Shapes, SubdivisionQuadruplesTheTrianglesAndKeepsEachLinearPart) {
+  const auto pair = shapes::make_shape("man-wave");
+  auto fine = shapes::subdivided(pair);
+  EXPECT_NO_THROW(global::check_well_formed(fine.source));
+  EXPECT_NO_THROW(global::check_compatible(fine.source, fine.target));
+  EXPECT_NO_THROW(global::check_connected(fine.source));
+  EXPECT_FALSE(global::orient_counter_clockwise(fine.source));
+  EXPECT_TRUE(global::flipped_triangles(fine.target).empty());
+  ASSERT_EQ(fine.source.triangle_count(), 4 * pair.source.triangle_count());
+  std::set<std::pair<int, int>> edges;  // one midpoint each
+  for (Eigen::Index i = 0; i < pair.source.triangle_count(); ++i)
+    for (int c = 0; c < 3; ++c)
+      edges.insert(std::minmax(pair.source.triangles(c, i), pair.source.triangles((c + 1) % 3, i)));
+  EXPECT_EQ(fine.source.vertex_count(), pair.source.vertex_count() + static_cast<Eigen::Index>(edges.size()));
+  for (Eigen::Index i = 0; i < pair.source.triangle_count(); ++i) {
+    global::Corners<double> p, q;
+    for (int c = 0; c < 3; ++c) p.col(c) = pair.source.corner(i, c), q.col(c) = pair.target.corner(i, c);
+    const Eigen::Matrix2d A = global::linear_part(p, q);
+    double area = 0;
+    for (Eigen::Index child = 4 * i; child < 4 * i + 4; ++child) {
+      for (int c = 0; c < 3; ++c) p.col(c) = fine.source.corner(child, c), q.col(c) = fine.target.corner(child, c);
+      EXPECT_LT((global::linear_part(p, q) - A).norm(), 1e-9 * A.norm());
+      area += fine.source.doubled_signed_area(child);
+    }
+    EXPECT_NEAR(area, pair.source.doubled_signed_area(i), 1e-12);
   }
 }
 

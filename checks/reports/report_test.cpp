@@ -40,3 +40,59 @@ TEST(Report, TableFirstThenSectionsThenEnvironment) {
   EXPECT_NE(md.find("![kaji.polar.det](figures/p.png)"), std::string::npos);
   EXPECT_NE(md.find("test cpu"), std::string::npos);
 }
+
+TEST(Report, LinksAViewerPageInsteadOfShowingItAsAnImage) {
+  nlohmann::json claim = {{"id", "kaji.global.flips"},
+                          {"group", "Global"},
+                          {"where", "Kaji §4"},
+                          {"statement", "s"},
+                          {"verdict", "confirmed"},
+                          {"summary", ""},
+                          {"evidence",
+                           {{"method", "m"},
+                            {"sample_size", 1},
+                            {"seed", nullptr},
+                            {"tolerance", nullptr},
+                            {"worst_deviation", nullptr},
+                            {"details", nlohmann::json::object()},
+                            {"measurements", nlohmann::json::object()}}},
+                          {"counterexample", nullptr},
+                          {"correction", nullptr},
+                          {"figures", {"figures/f-1.png", "figures/f-viewer.html"}}};
+  const std::string md = affinterp::report::render_markdown({{"seed", 1},
+                                                             {"size", "quick"},
+                                                             {"generated_at", "now"},
+                                                             {"environment", nlohmann::json::object()},
+                                                             {"claims", {claim}}});
+  EXPECT_NE(md.find("[figure](figures/f-1.png) · [viewer](figures/f-viewer.html)"), std::string::npos);
+  EXPECT_NE(md.find("[Interactive viewer](figures/f-viewer.html)"), std::string::npos);
+  EXPECT_EQ(md.find("](figures/f-viewer.html)\n\n!["), std::string::npos);
+  EXPECT_EQ(md.find("![kaji.global.flips](figures/f-viewer.html)"), std::string::npos);
+}
+
+TEST(Report, ScaleTableAndCurveAgainstTheTargets) {
+  const nlohmann::json row = {{"triangles", 1045216.0}, {"setup_F_ms", 2500.0}, {"setup_R_ms", 3100.0},
+                              {"frame_F_ms", 80.0},     {"frame_R_ms", 900.0},  {"peak_MB", 1500.0}};
+  const nlohmann::json scale = {
+      {"machine", "test cpu"},
+      {"compiler", "g++"},
+      {"rows", {row}},
+      {"targets",
+       {{"triangles", 1e6}, {"setup_ms", 5000.0}, {"frame_F_ms", 100.0}, {"frame_R_ms", 600.0}, {"peak_MB", 2048.0}}},
+      {"met", false},
+      {"figures", {"figures/engine-scale.png", "figures/engine-scale.svg"}}};
+  nlohmann::json doc = {{"seed", 1},
+                        {"size", "full"},
+                        {"generated_at", "now"},
+                        {"environment", nlohmann::json::object()},
+                        {"claims", nlohmann::json::array()},
+                        {"engine_scale", scale}};
+  std::string md = affinterp::report::render_markdown(doc);
+  EXPECT_NE(md.find("## Global engine at scale"), std::string::npos);
+  EXPECT_NE(md.find("| 1045216 | 2500 (—) | 3100 (—) | 80.0 (—) | 900.0 (—) | 1500 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("**not met**"), std::string::npos);
+  EXPECT_NE(md.find("![cost against mesh size](figures/engine-scale.png)"), std::string::npos);
+  doc["engine_scale"] = nullptr;
+  md = affinterp::report::render_markdown(doc);
+  EXPECT_NE(md.find("`reports/bench/bench_scale.json` is absent"), std::string::npos);
+}

@@ -1,5 +1,6 @@
 #include "experiments/claims/claims_json.hpp"
 
+#include "experiments/claims/engine_scale.hpp"
 #include "experiments/claims/engine_speed.hpp"
 
 #include <chrono>
@@ -90,6 +91,7 @@ nlohmann::json claims_document(const ClaimRegistry& registry, const std::vector<
       {"environment", environment},
       {"claims", claims},
       {"engine_speed", engine_speed(context.bench_dir / "bench_interp.json")},
+      {"engine_scale", engine_scale(context.bench_dir / "bench_scale.json", context)},
   };
 }
 

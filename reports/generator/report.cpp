@@ -49,12 +49,19 @@ std::string one_line_evidence(const json& evidence) {
   return out.str();
 }
 
+/// An interactive viewer page among a claim's figures (plots/viewer.hpp): linked, not shown as an image.
+bool is_viewer(const std::string& path) { return path.ends_with(".html"); }
+
 std::string figure_link(const json& figures) {
+  std::string link;
   for (const auto& f : figures) {
     const std::string path = f.get<std::string>();
-    if (path.ends_with(".png")) return "[figure](" + path + ")";
+    if (path.ends_with(".png") && link.empty()) link = "[figure](" + path + ")";
   }
-  return "";
+  for (const auto& f : figures)
+    if (is_viewer(f.get<std::string>()))
+      link += (link.empty() ? "" : " · ") + ("[viewer](" + f.get<std::string>() + ")");
+  return link;
 }
 
 /// How strong a verdict is, in the words of the report's "Strength" list.
@@ -116,6 +123,11 @@ void write_claim_section(std::ostringstream& md, const json& c) {
     const std::string path = f.get<std::string>();
     if (path.ends_with(".png")) md << "![" << id << "](" << path << ")\n\n";
   }
+  for (const auto& f : c["figures"])
+    if (is_viewer(f.get<std::string>()))
+      md << "[Interactive viewer](" << f.get<std::string>()
+         << "): scrub through the frames, colour the triangles by area ratio, distortion or flips, see the "
+            "energy over time (open in a browser; it works offline).\n\n";
 }
 
 std::string fixed(const json& value, int digits) {
@@ -151,6 +163,41 @@ void write_engine_speed(std::ostringstream& md, const json& speed) {
        << fixed(row["baseline_ms"], 1) << " | " << fixed(row["speedup_vs_baseline"], 1) << " | "
        << (row.value("met", false) ? "yes" : "**no**") << " |\n";
   md << "\n";
+}
+
+/// How the engine's cost grows with the mesh against the 1M-triangle targets (bench_scale, one run).
+void write_engine_scale(std::ostringstream& md, const json& scale) {
+  md << "## Global engine at scale\n\n";
+  if (scale.is_null()) {
+    md << "Not measured: `reports/bench/bench_scale.json` is absent (run `experiments/reproduce.sh`).\n\n";
+    return;
+  }
+  const json& targets = scale["targets"];
+  md << "`build/bin/bench_scale` on the generated man bent by a curl through one radian (65k triangles) and that "
+        "pair subdivided 1-to-4 once and twice, with `affinterp interpolate`'s default options, the median of three "
+        "runs; wall-clock times, with the CPU time in brackets (the engine runs on one thread, so the two agree on "
+        "an idle machine; a larger wall-clock time means a shared machine); peak memory is the process's resident "
+        "high-water mark (getrusage) over each size's benchmarks; "
+        "machine: "
+     << cell(scale.value("machine", "?")) << "; " << cell(scale.value("compiler", "?")) << ". Targets at "
+     << fixed(targets["triangles"], 0) << " triangles: set-up ≤ " << fixed(targets["setup_ms"], 0) << " ms, E^F ≤ "
+     << fixed(targets["frame_F_ms"], 0) << " ms and E^R ≤ " << fixed(targets["frame_R_ms"], 0)
+     << " ms per frame, peak ≤ " << fixed(targets["peak_MB"], 0) << " MB: "
+     << (scale["met"].is_null()     ? "not measured at that size"
+         : scale["met"].get<bool>() ? "met"
+                                    : "**not met**")
+     << ".\n\n| triangles | set-up E^F (ms) | set-up E^R (ms) | frame E^F (ms) | frame E^R (ms) | peak (MB) |\n"
+        "|---|---|---|---|---|---|\n";
+  const auto both = [](const json& row, const std::string& key, int digits) {
+    return fixed(row[key + "_ms"], digits) + " (" + fixed(row.value(key + "_cpu_ms", json()), digits) + ")";
+  };
+  for (const auto& row : scale["rows"])
+    md << "| " << fixed(row["triangles"], 0) << " | " << both(row, "setup_F", 0) << " | " << both(row, "setup_R", 0)
+       << " | " << both(row, "frame_F", 1) << " | " << both(row, "frame_R", 1) << " | " << fixed(row["peak_MB"], 0)
+       << " |\n";
+  md << "\n";
+  for (const auto& f : scale.value("figures", json::array()))
+    if (f.get<std::string>().ends_with(".png")) md << "![cost against mesh size](" << f.get<std::string>() << ")\n\n";
 }
 
 }  // namespace
@@ -199,6 +246,7 @@ std::string render_markdown(const json& doc) {
   }
 
   write_engine_speed(md, doc.value("engine_speed", json()));
+  write_engine_scale(md, doc.value("engine_scale", json()));
   md << "## How to reproduce\n\n"
         "From a fresh clone on Debian, `bash experiments/reproduce.sh` installs what is missing, builds, "
         "runs the benchmarks and writes this report and `claims.json`. One claim alone: "

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace affinterp::global {
 namespace {
@@ -43,6 +44,31 @@ TriangleQuadratic<double> local_error(Energy energy, const TriangleTerm& term, c
       return procrustes_quadratic(term.corners, A) * term.weight;
   }
   return {};
+}
+
+/// ‖Y − (⟨X, Y⟩ X + ⟨JX, Y⟩ JX)/‖X‖²‖²: the residual of projecting Y onto span{X, JX} (⟨X, JX⟩ = 0,
+/// ‖JX‖ = ‖X‖), which is min_{s,δ} ‖s R_δ X − Y‖² (Kaji Appendix). Written as a residual rather than as
+/// ‖Y‖² − (⟨X, Y⟩² + ⟨JX, Y⟩²)/‖X‖², it is never negative, also where Y is nearly a similarity of X.
+template <class Matrix>
+double similarity_residual(const Matrix& X, const Matrix& Y) {
+  const Matrix JX = rotation_J<double>() * X;
+  return (Y - (frobenius_inner(X, Y) * X + frobenius_inner(JX, Y) * JX) / X.squaredNorm()).squaredNorm();
+}
+
+/// E_i(A, B) of one term split into its E^F part and the rest, times the term's weight: E^F = ‖A − B‖², eq. (4)'s
+/// E^R = min ‖s R_δ A − B‖², and E^S = min ‖s R_δ X − Y‖² with X = A P̃, Y = V Π (procrustes_quadratic).
+std::pair<double, double> local_error_value(Energy energy, const TriangleTerm& term, const Eigen::Matrix2d& A,
+                                            const Eigen::Matrix<double, 2, 3>& V) {
+  if (energy == Energy::procrustes) {
+    const Eigen::Matrix<double, 2, 3> X = A * (term.corners.colwise() - term.corners.rowwise().mean());
+    const Eigen::Matrix<double, 2, 3> Y = V.colwise() - V.rowwise().mean();
+    return {0.0, term.weight * similarity_residual(X, Y)};
+  }
+  const Eigen::Matrix2d B = V * term.D;  // eq. (1)
+  const double w = energy == Energy::blend ? term.frobenius_share : energy == Energy::frobenius ? 1.0 : 0.0;
+  const double frobenius = w > 0 ? w * frobenius_error(A, B) : 0.0;
+  const double similarity = w < 1 ? (1 - w) * similarity_residual(A, B) : 0.0;
+  return {term.weight * frobenius, term.weight * similarity};
 }
 
 }  // namespace
@@ -165,6 +191,28 @@ Eigen::VectorXcd FrameAssembly::right_hand_side_at(double t) const {
       u[k] -= 2 * term.weight * alpha_k * std::complex<double>(r.x(), r.y());
   }
   return u * -0.5;
+}
+
+FrameEnergy FrameAssembly::energy_at(double t, const Eigen::Matrix2Xd& v) const {
+  FrameEnergy energy;
+  auto add = [&](const TriangleTerm& term, const Eigen::Matrix2d& A, double& direction) {
+    Eigen::Matrix<double, 2, 3> V;
+    for (std::size_t c = 0; c < 3; ++c) V.col(static_cast<Eigen::Index>(c)) = v.col(term.vertex[c]);
+    const auto [frobenius, similarity] = local_error_value(energy_, term, A, V);
+    energy.frobenius += frobenius, energy.similarity += similarity, direction += frobenius + similarity;
+  };
+  for (std::size_t i = 0; i < forward_terms_.size(); ++i) {
+    const auto k = static_cast<Eigen::Index>(i);
+    add(forward_terms_[i], forward_.at(k, t), energy.forward);
+    if (reverse_) add(reverse_terms_[i], reverse_->at(k, 1 - t), energy.backward);  // E^{-1}(1 − t)
+  }
+  for (const ConstraintTerm& term : constraints_) {  // c ‖Σ α_k v_k − r(t)‖²
+    Eigen::Vector2d l = -term.target(t);
+    for (const auto& [k, alpha_k] : term.coefficients) l += alpha_k * v.col(k);
+    energy.constraints += term.weight * l.squaredNorm();
+  }
+  energy.total = energy.forward + energy.backward + energy.constraints;
+  return energy;
 }
 
 FrameQuadratic FrameAssembly::dense_quadratic_at(double t) const {

@@ -8,6 +8,7 @@
 // assembled once. Otherwise H(t) is refilled for each t in a fixed sparsity pattern whose value slots
 // are precomputed. The assembly does not change after construction: the caller owns the matrix it fills.
 #include "theory/global/constraint_terms.hpp"
+#include "theory/global/frame_energy.hpp"
 #include "theory/global/frame_quadratic.hpp"
 #include "theory/global/local_error.hpp"
 #include "theory/global/local_paths.hpp"
@@ -55,6 +56,9 @@ class FrameAssembly {
 
   /// The whole form at t, real and dense (for inspection on small meshes).
   FrameQuadratic dense_quadratic_at(double t) const;
+  /// E_t at the vertices `v` from the local errors' closed forms (local_error.hpp), not from H(t): the value
+  /// vᵀG(t)v + vᵀu(t) + c(t) of dense_quadratic_at, computed in O(triangles).
+  FrameEnergy energy_at(double t, const Eigen::Matrix2Xd& v) const;
 
  private:
   TriangleQuadratic<double> triangle_quadratic(Eigen::Index i, double t) const;

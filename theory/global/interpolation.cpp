@@ -11,6 +11,7 @@
 #include <cmath>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 namespace affinterp::global {
@@ -134,6 +135,13 @@ Eigen::Matrix2Xd Interpolation::vertices_at(double t) const {
   Eigen::Matrix2Xd v(2, z.size());
   v << z.real().transpose(), z.imag().transpose();  // z_k = v_kx + i v_ky
   return v;
+}
+
+FrameEnergy Interpolation::energy_at(double t, const Eigen::Matrix2Xd& v) const {
+  if (v.cols() != engine_->assembly->pattern().rows())
+    throw std::invalid_argument("energy_at: " + std::to_string(v.cols()) + " vertices for a mesh of " +
+                                std::to_string(engine_->assembly->pattern().rows()));
+  return engine_->assembly->energy_at(t, v);
 }
 
 FrameQuadratic Interpolation::quadratic_at(double t) const { return engine_->assembly->dense_quadratic_at(t); }

@@ -8,8 +8,10 @@
 // solving 2 G(t) v = −u(t) — as the n × n complex Hermitian system H(t) z = −ũ(t)/2 of hermitian_form.hpp —
 // with a sparse Cholesky factorisation.
 //
-// This facade includes what its callers need: the options (options.hpp), the error (refused_problem.hpp)
-// and the frame's quadratic form (frame_quadratic.hpp). The engine's own headers include those, never this.
+// This facade includes what its callers need: the options (options.hpp), the error (refused_problem.hpp),
+// the frame's quadratic form (frame_quadratic.hpp) and its value (frame_energy.hpp). The engine's own
+// headers include those, never this.
+#include "theory/global/frame_energy.hpp"
 #include "theory/global/frame_quadratic.hpp"
 #include "theory/global/mesh.hpp"
 #include "theory/global/options.hpp"
@@ -39,6 +41,9 @@ class Interpolation {
   /// turns, so give each thread its own Interpolation to compute frames in parallel.
   Eigen::Matrix2Xd vertices_at(double t) const;
 
+  /// The global error function E_t (Kaji §4; E′(t) when symmetrised) that vertices_at(t) minimises, at the
+  /// vertices `v` (2 × n), with its parts. Throws std::invalid_argument when `v` has not n columns.
+  FrameEnergy energy_at(double t, const Eigen::Matrix2Xd& v) const;
   /// The quadratic form minimised at time t (dense; for tests and claims on small meshes).
   FrameQuadratic quadratic_at(double t) const;
   /// Whether G is the same for every t, so that it is factored once (true exactly when no triangle

@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -40,6 +41,7 @@ struct InterpolateOptions {
   std::vector<std::string> pins, loci, edges;
   std::string barycentre = "linear";
   std::string time_range = "0:1";
+  std::optional<std::string> times;  ///< --times T1,T2,...: exactly these frames (not with --frames, --time-range)
 };
 
 /// Frames drawn in the filmstrip: at most 8, evenly spread, first and last included.
@@ -55,7 +57,36 @@ std::pair<double, double> parse_time_range(const std::string& text) {
   return {t0, t1};
 }
 
-global::InterpolationOptions engine_options(const InterpolateOptions& o, const io::MeshPair& pair) {
+/// The list of --times: finite reals separated by commas, in the order given (repeats allowed).
+std::vector<double> parse_times(const std::string& text) {
+  auto bad = [&] {
+    return CommandFailed("--times '" + text + "': expected finite reals separated by commas (e.g. 0,0.1,0.5,1)",
+                         usage_error);
+  };
+  std::vector<double> times;
+  std::istringstream list(text);
+  for (std::string item; std::getline(list, item, ',');) {
+    std::istringstream number(item);
+    double t = 0;
+    if (!(number >> t) || !(number >> std::ws).eof() || !std::isfinite(t)) throw bad();
+    times.push_back(t);
+  }
+  if (times.empty() || text.back() == ',') throw bad();
+  return times;
+}
+
+/// The frames' times: --times as given, else --frames N evenly over --time-range.
+std::vector<double> frame_times(const InterpolateOptions& o) {
+  if (o.times) return parse_times(*o.times);
+  if (o.frames < 2) throw CommandFailed("--frames must be at least 2", usage_error);
+  const auto [t0, t1] = parse_time_range(o.time_range);
+  std::vector<double> times;
+  for (int k = 0; k < o.frames; ++k) times.push_back(t0 + (t1 - t0) * k / (o.frames - 1));
+  return times;
+}
+
+global::InterpolationOptions engine_options(const InterpolateOptions& o, const io::MeshPair& pair,
+                                            const std::vector<double>& times) {
   global::InterpolationOptions options;
   try {
     options.homotopy = global::parse_local_homotopy(o.local);
@@ -84,7 +115,8 @@ global::InterpolationOptions engine_options(const InterpolateOptions& o, const i
                               std::to_string(pair.source.triangle_count()) + " triangles (one w_i per line)",
                           1);
   }
-  std::tie(options.t_begin, options.t_end) = parse_time_range(o.time_range);
+  const auto [first, last] = std::minmax_element(times.begin(), times.end());
+  options.t_begin = *first, options.t_end = *last;
   return options;
 }
 
@@ -100,6 +132,20 @@ nlohmann::json metrics_json(const global::FrameMetrics& m) {
           {"area_ratio", finite_or_null(m.area_ratio)}};
 }
 
+/// metrics.json's "energy_parts": for a blend the E^F and E^R shares, for a symmetrised energy E(t) and
+/// E^{-1}(1 − t), and the constraints C; each split plus C sums to "energy".
+nlohmann::json energy_parts_json(const global::FrameEnergy& e, const global::InterpolationOptions& options) {
+  nlohmann::json parts;
+  if (options.energy == global::Energy::blend) parts["E_F"] = e.frobenius, parts["E_R"] = e.similarity;
+  if (options.symmetric) parts["forward"] = e.forward, parts["backward"] = e.backward;
+  parts["C"] = e.constraints;
+  return parts;
+}
+
+bool energy_has_parts(const global::InterpolationOptions& options) {
+  return options.energy == global::Energy::blend || options.symmetric;
+}
+
 std::string frame_name(int k) {
   std::ostringstream name;
   name << "frame_" << std::setw(4) << std::setfill('0') << k << ".obj";
@@ -113,7 +159,8 @@ std::string time_label(double t) {
 }
 
 void run(const InterpolateOptions& o) {
-  if (o.frames < 2) throw CommandFailed("--frames must be at least 2", usage_error);
+  const std::vector<double> times = frame_times(o);
+  const int frame_count = static_cast<int>(times.size());
   io::MeshPair pair;
   try {
     pair = io::read_mesh_pair(o.source, o.target, {o.allow_flipped_target});
@@ -124,8 +171,8 @@ void run(const InterpolateOptions& o) {
   if (!pair.flipped_target_triangles.empty())
     std::cerr << "note: " << pair.flipped_target_triangles.size() << " target triangle(s) flipped (allowed)\n";
 
-  global::InterpolationOptions options = engine_options(o, pair);
-  const auto default_edge = global::default_edge_direction(pair.source, options);
+  global::InterpolationOptions options = engine_options(o, pair, times);
+  const auto default_edge = global::default_edge_direction(pair.source, pair.target, options);
   if (default_edge) options.constraints.edges.push_back(*default_edge);
   std::unique_ptr<global::Interpolation> interpolation;
   try {
@@ -139,16 +186,27 @@ void run(const InterpolateOptions& o) {
   const std::string title = fs::path(o.source).filename().string() + " -> " + fs::path(o.target).filename().string() +
                             " (" + o.local + ", E^" + o.energy + ")";
   plots::ViewerRun run{title, pair.source, {}, {}, {}, {}};
-  const bool long_run = static_cast<double>(o.frames) * static_cast<double>(pair.source.triangle_count()) > 2e5;
+  const bool long_run = static_cast<double>(frame_count) * static_cast<double>(pair.source.triangle_count()) > 2e5;
   std::optional<Progress> progress;  // the frames, then the filmstrip, the GIF and the viewer
-  if (long_run) progress.emplace("interpolate", static_cast<std::size_t>(o.frames) + (o.figures ? 3 : 0));
+  if (long_run) progress.emplace("interpolate", static_cast<std::size_t>(frame_count) + (o.figures ? 3 : 0));
+  const std::string energy_name = "E^" + o.energy + (o.symmetric ? " symmetrised" : "");
+  std::vector<plots::FrameSeries> energy_series = {{energy_name, {}}};  // then the parts, as `view` reads them
   global::Mesh frame = pair.source;  // frames keep the files' face list, clockwise ones included
   if (pair.reoriented) global::reverse_orientation(frame);
-  for (int k = 0; k < o.frames; ++k) {
-    const double t = options.t_begin + (options.t_end - options.t_begin) * k / (o.frames - 1);
+  for (int k = 0; k < frame_count; ++k) {
+    const double t = times[static_cast<std::size_t>(k)];
     frame.vertices = interpolation->vertices_at(t);
     io::write_obj(frame, staged.staging() / frame_name(k));
-    nlohmann::json entry = {{"index", k}, {"t", t}, {"file", frame_name(k)}};
+    const global::FrameEnergy energy = interpolation->energy_at(t, frame.vertices);
+    nlohmann::json entry = {{"index", k}, {"t", t}, {"file", frame_name(k)}, {"energy", finite_or_null(energy.total)}};
+    energy_series[0].values.push_back(energy.total);
+    if (energy_has_parts(options)) {
+      entry["energy_parts"] = energy_parts_json(energy, options);
+      if (k == 0)
+        for (const auto& [name, value] : entry["energy_parts"].items()) energy_series.push_back({name, {}});
+      for (std::size_t s = 1; s < energy_series.size(); ++s)
+        energy_series[s].values.push_back(entry["energy_parts"][energy_series[s].name].get<double>());
+    }
     const global::FrameMetrics metrics = global::frame_metrics(pair.source, frame.vertices);
     entry.update(metrics_json(metrics));
     frames.push_back(entry);
@@ -174,16 +232,19 @@ void run(const InterpolateOptions& o) {
                                {"loci", o.loci},
                                {"edge_directions", o.edges},
                                {"barycentre_locus", o.barycentre},
-                               {"time_range", {options.t_begin, options.t_end}}}},
+                               {"time_range", {options.t_begin, options.t_end}},
+                               {"times", o.times ? nlohmann::json(times) : nlohmann::json(nullptr)}}},
                              {"frames", frames}};
   if (default_edge)
     document["options"]["default_edge_direction"] =
         std::to_string(default_edge->i) + ":" + std::to_string(default_edge->j);
   if (o.figures) {
+    run.energy = std::move(energy_series);
     std::vector<plots::MeshFrame> drawn, strip;
     for (std::size_t k = 0; k < run.frames.size(); ++k) drawn.push_back({run.frames[k], time_label(run.times[k])});
     const std::size_t n = drawn.size(), shown = std::min(n, filmstrip_frames);
-    for (std::size_t j = 0; j < shown; ++j) strip.push_back(drawn[(2 * j * (n - 1) + shown - 1) / (2 * (shown - 1))]);
+    for (std::size_t j = 0; j < shown; ++j)
+      strip.push_back(shown == 1 ? drawn[0] : drawn[(2 * j * (n - 1) + shown - 1) / (2 * (shown - 1))]);
     plots::draw_filmstrip(staged.staging() / "filmstrip", pair.source.triangles, strip, title);
     if (progress) progress->advance();
     plots::write_animation_gif(staged.staging() / "animation.gif", pair.source.triangles, drawn);
@@ -205,7 +266,7 @@ void run(const InterpolateOptions& o) {
   staged.commit();
   int worst = 0;
   for (const auto& f : frames) worst = std::max(worst, f["flipped_triangles"].get<int>());
-  std::cerr << "wrote " << o.frames << " frames to " << o.out << " (most flipped triangles in a frame: " << worst
+  std::cerr << "wrote " << frame_count << " frames to " << o.out << " (most flipped triangles in a frame: " << worst
             << ")\n";
 }
 
@@ -218,7 +279,8 @@ void add_interpolate_command(CLI::App& app) {
       "Interpolate between two compatible 2D triangle meshes (Kaji et al. 2012, §3-4): writes OUT/frame_0000.obj ..., "
       "OUT/filmstrip.png/.svg, OUT/animation.gif, OUT/viewer.html (interactive; viewer.html#frame=K opens at frame K) "
       "and "
-      "OUT/metrics.json. Vertex indices are 0-based "
+      "OUT/metrics.json (per frame: t, the minimised energy E_t of Kaji §4 with its parts for a blend or --symmetric, "
+      "and distortion metrics). Vertex indices are 0-based "
       "(the order of the v lines). Meshes: triangles only (polygons refused), z = 0; when every source triangle runs "
       "clockwise all are reversed for the computation (frames keep the files' face list); mixed orientations, "
       "zero-area "
@@ -227,7 +289,8 @@ void add_interpolate_command(CLI::App& app) {
   cmd->add_option("--source", o->source, "Source mesh (.obj or .off; z must be 0)")->required();
   cmd->add_option("--target", o->target, "Target mesh with the same triangles")->required();
   cmd->add_option("--out", o->out, "Output folder")->required();
-  cmd->add_option("--frames", o->frames, "Number of frames N (t = T0 + k (T1-T0)/(N-1))")->capture_default_str();
+  CLI::Option* frames =
+      cmd->add_option("--frames", o->frames, "Number of frames N (t = T0 + k (T1-T0)/(N-1))")->capture_default_str();
   cmd->add_option("--local", o->local, "Local homotopy A_i(t): exp (R^t S^t, eq. 3), polar (eq. 2), linear, svd")
       ->check(CLI::IsMember({"exp", "polar", "linear", "svd"}))
       ->capture_default_str();
@@ -257,8 +320,14 @@ void add_interpolate_command(CLI::App& app) {
   cmd->add_option("--barycentre-locus", o->barycentre,
                   "linear[@C] | none | x1,y1;x2,y2;...[@C]: the barycentre's path (linear: source to target)")
       ->capture_default_str();
-  cmd->add_option("--time-range", o->time_range, "T0:T1, the times of the first and last frame (extrapolation allowed)")
-      ->capture_default_str();
+  CLI::Option* time_range = cmd->add_option("--time-range", o->time_range,
+                                            "T0:T1, the times of the first and last frame (extrapolation allowed)")
+                                ->capture_default_str();
+  cmd->add_option("--times", o->times,
+                  "T1,T2,...: write exactly these frames, in this order (any finite reals, extrapolation allowed; "
+                  "instead of --frames and --time-range)")
+      ->excludes(frames)
+      ->excludes(time_range);
   cmd->add_flag("--allow-flipped-target", o->allow_flipped_target,
                 "Accept target triangles flipped against the source");
   cmd->add_flag("!--no-figures", o->figures, "Write only frames and metrics.json (no filmstrip, GIF or viewer)");

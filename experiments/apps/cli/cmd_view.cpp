@@ -58,7 +58,13 @@ plots::ViewerRun read_run(const fs::path& folder) {
         {},
         {},
         {}};
-    plots::FrameSeries energy{"E^" + options.at("energy").get<std::string>(), {}};
+    // the minimised energy of each frame, then its parts (energy_parts: E_F, E_R, forward, backward, C)
+    const bool symmetric = options.value("symmetric", false);
+    std::vector<plots::FrameSeries> energy = {
+        {"E^" + options.at("energy").get<std::string>() + (symmetric ? " symmetrised" : ""), {}}};
+    const nlohmann::json& first = document.at("frames").empty() ? nlohmann::json() : document["frames"][0];
+    if (first.contains("energy_parts"))
+      for (const auto& [name, value] : first["energy_parts"].items()) energy.push_back({name, {}});
     for (const auto& frame : document.at("frames")) {
       const global::Mesh mesh = io::read_mesh(folder / frame.at("file").get<std::string>());
       if (mesh.vertex_count() != pair.source.vertex_count())
@@ -72,10 +78,13 @@ plots::ViewerRun read_run(const fs::path& folder) {
                              number_or_infinity(frame.at("max_det")), number_or_infinity(frame.at("max_distortion")),
                              number_or_infinity(frame.at("mean_distortion")),
                              number_or_infinity(frame.at("area_ratio"))});
-      if (frame.contains("energy")) energy.values.push_back(number_or_infinity(frame["energy"]));
+      if (!frame.contains("energy")) continue;
+      energy[0].values.push_back(number_or_infinity(frame["energy"]));
+      for (std::size_t s = 1; s < energy.size(); ++s)
+        energy[s].values.push_back(number_or_infinity(frame.at("energy_parts").at(energy[s].name)));
     }
     if (run.frames.empty()) throw CommandFailed(file.string() + ": no frames", 1);
-    if (energy.values.size() == run.frames.size()) run.energy.push_back(std::move(energy));
+    if (energy[0].values.size() == run.frames.size()) run.energy = std::move(energy);
     return run;
   } catch (const nlohmann::json::exception& e) {
     throw CommandFailed(file.string() + ": " + e.what(), 1);

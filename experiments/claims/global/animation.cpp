@@ -4,6 +4,7 @@
 #include "plots/gnuplot_process.hpp"
 #include "plots/mesh_overlay.hpp"
 #include "plots/mesh_strip.hpp"
+#include "plots/viewer.hpp"
 #include "theory/global/locus.hpp"
 
 #include <algorithm>
@@ -25,12 +26,13 @@ double Animation::min_det() const {
 
 Animation animate(const std::string& label, const global::Mesh& source, const global::Interpolation& interpolation,
                   int count) {
-  Animation animation{label, {}, {}, {}};
+  Animation animation{label, {}, {}, {}, {}};
   for (int k = 0; k < count; ++k) {
     const double t = static_cast<double>(k) / (count - 1);
     animation.t.push_back(t);
     animation.frames.push_back(interpolation.vertices_at(t));
     animation.metrics.push_back(global::frame_metrics(source, animation.frames.back()));
+    animation.energy.push_back(interpolation.energy_at(t, animation.frames.back()).total);
   }
   return animation;
 }
@@ -84,6 +86,13 @@ std::vector<std::string> draw_animations(const RunSettings& ctx, const std::stri
                          .render();
   for (const auto& file : files)
     if (file.ends_with(".png")) refs.push_back(RunSettings::figure_ref(file));
+  // the same interpolations to scrub through, side by side on one slider, each with its energy E_t
+  std::vector<plots::ViewerRun> runs;
+  for (const Animation& animation : animations)
+    runs.push_back(
+        {animation.label, source, animation.t, animation.frames, animation.metrics, {{"E_t", animation.energy}}});
+  plots::write_viewer(ctx.figure_stem(name + "-viewer.html"), title, runs);
+  refs.push_back(RunSettings::figure_ref(name + "-viewer.html"));
   return refs;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // An interpolation sampled at evenly spaced frames with the per-frame metrics that decide the figure
-// claims (flips, min det B_i, distortion), and the drawing of its filmstrip and metric curves.
+// claims (flips, min det B_i, distortion) and the minimised energy, and the drawing of its filmstrip, metric
+// curves and interactive viewer.
 #include "experiments/claims/context.hpp"
 #include "theory/global/interpolation.hpp"
 #include "theory/global/metrics.hpp"
@@ -15,6 +16,7 @@ struct Animation {
   std::vector<double> t;
   std::vector<Eigen::Matrix2Xd> frames;
   std::vector<global::FrameMetrics> metrics;
+  std::vector<double> energy;  ///< E_t (Kaji §4) at each frame: what the interpolation minimised
 
   Eigen::Index most_flips() const;  ///< max over frames of the flipped-triangle count
   double min_det() const;           ///< min over frames of min_i det B_i(t)
@@ -28,7 +30,8 @@ Animation animate(const std::string& label, const global::Mesh& source, const gl
 Eigen::Index extreme_vertex(const global::Mesh& mesh, const Eigen::Vector2d& direction);
 
 /// Draws a filmstrip per animation (frames at the given indices) and one chart of min det B_i(t) and the
-/// flip count against t for all of them; returns the figure references for Outcome::figures.
+/// flip count against t for all of them, and writes `name`-viewer.html showing all of them side by side
+/// (plots/viewer.hpp); returns the figure references for Outcome::figures (the viewer's last).
 std::vector<std::string> draw_animations(const RunSettings& ctx, const std::string& name, const global::Mesh& source,
                                          const std::vector<Animation>& animations, const std::vector<int>& shown_frames,
                                          const std::string& title);

@@ -110,6 +110,7 @@ Outcome check(const ClaimContext& ctx) {
                                             global::Interpolation(man.target, man.source, options), 9);
     std::reverse(backward.frames.begin(), backward.frames.end());
     std::reverse(backward.metrics.begin(), backward.metrics.end());
+    std::reverse(backward.energy.begin(), backward.energy.end());
     out.figures = global_figures::draw_animations(ctx, "thesis-fig2.1-symmetrised", man.source, {forward, backward},
                                                   {0, 2, 4, 6, 8}, "Thesis Fig 2.1 (man, E^R, exp), symmetrised");
   }
