@@ -28,9 +28,9 @@ nlohmann::json median(const std::string& name, double ms, double peak_MB) {
 
 /// A bench file of this test's own (CTest runs the tests of this file in parallel processes).
 fs::path write_bench(const nlohmann::json& benchmarks) {
-  const fs::path file = fs::temp_directory_path() /
-                        ("affinterp_engine_scale_" +
-                         std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".json");
+  std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  name.insert(0, "affinterp_engine_scale_").append(".json");
+  const fs::path file = fs::temp_directory_path() / name;
   std::ofstream(file)
       << nlohmann::json{{"context", {{"affinterp_cpu", "test cpu"}}}, {"benchmarks", benchmarks}}.dump();
   return file;
@@ -75,7 +75,8 @@ TEST(EngineScale, DrawsTheCostCurve) {
     for (const auto& run : runs) benchmarks.push_back(run);
   const fs::path file = write_bench(benchmarks);
   RunSettings settings;
-  settings.figure_dir = fs::temp_directory_path() / ("affinterp_engine_scale_figures_" + std::to_string(::getpid()));
+  settings.figure_dir =
+      fs::temp_directory_path() / "affinterp_engine_scale_figures" / fs::path(std::to_string(::getpid()));
   fs::create_directories(settings.figure_dir);
   const nlohmann::json table = engine_scale(file, settings);
   fs::remove(file);
