@@ -38,9 +38,11 @@ fs::path write_bench(const nlohmann::json& benchmarks) {
 
 /// The four benchmarks of one size.
 std::vector<nlohmann::json> size(int triangles, double setup_ms, double frame_F_ms, double frame_R_ms, double peak) {
-  const std::string n = "/" + std::to_string(triangles);
-  return {median("scale_setup/F" + n, setup_ms, peak / 2), median("scale_setup/R" + n, setup_ms * 1.2, peak),
-          median("scale_frame/F" + n, frame_F_ms, peak / 2), median("scale_frame/R" + n, frame_R_ms, peak)};
+  const auto name = [triangles](const char* benchmark) {
+    return std::string(benchmark).append("/").append(std::to_string(triangles));
+  };
+  return {median(name("scale_setup/F"), setup_ms, peak / 2), median(name("scale_setup/R"), setup_ms * 1.2, peak),
+          median(name("scale_frame/F"), frame_F_ms, peak / 2), median(name("scale_frame/R"), frame_R_ms, peak)};
 }
 
 TEST(EngineScale, TheLargestSizeBeyondAMillionDecidesTheTargets) {
