@@ -40,3 +40,36 @@ TEST(Report, TableFirstThenSectionsThenEnvironment) {
   EXPECT_NE(md.find("![kaji.polar.det](figures/p.png)"), std::string::npos);
   EXPECT_NE(md.find("test cpu"), std::string::npos);
 }
+
+TEST(Report, ClaimTablesAreRenderedAsMarkdownNotAsJson) {
+  nlohmann::json details = {{"worst", 1e-15},
+                            {"tables",
+                             {{{"title", "Peer table"},
+                               {"columns", {"family", "ours", "theirs"}},
+                               {"rows", {{"spread", "1.0e-16", "2.0e-14; **3 NaN/∞**"}}}}}}};
+  const nlohmann::json claim = {{"id", "thesis.exp.accuracy"},
+                                {"group", "Thesis ch. 3"},
+                                {"where", "thesis §3.4"},
+                                {"statement", "accurate"},
+                                {"verdict", "corrected"},
+                                {"summary", ""},
+                                {"evidence",
+                                 {{"method", "sweep"},
+                                  {"sample_size", 3},
+                                  {"seed", 1},
+                                  {"tolerance", nullptr},
+                                  {"worst_deviation", nullptr},
+                                  {"details", details},
+                                  {"measurements", nlohmann::json::object()}}},
+                                {"counterexample", nullptr},
+                                {"correction", nullptr},
+                                {"figures", nlohmann::json::array()}};
+  const std::string md = affinterp::report::render_markdown(
+      {{"seed", 1}, {"size", "quick"}, {"environment", nlohmann::json::object()}, {"claims", {claim}}});
+  EXPECT_NE(md.find("**Peer table**\n\n| family | ours | theirs |\n|---|---|---|\n| spread | 1.0e-16 | 2.0e-14; **3 "
+                    "NaN/∞** |\n"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("\"worst\": 1e-15"), std::string::npos) << md;
+  EXPECT_EQ(md.find("\"tables\""), std::string::npos) << md;
+}

@@ -59,6 +59,7 @@ std::optional<BenchResults> read_bench_results(const std::filesystem::path& file
     if (!run.contains(counter)) continue;
     // Repeated benchmarks report aggregates: take the median. A single run is its own median.
     const bool aggregate = run.value("run_type", "iteration") == "aggregate";
+    if (!aggregate) results.repetitions[name].push_back(run[counter].get<double>());
     if (aggregate && run.value("aggregate_name", "") != "median") continue;
     if (!aggregate && results.median.contains(name)) continue;
     results.median[name] = run[counter].get<double>();

@@ -98,6 +98,24 @@ void write_summary_table(std::ostringstream& md, const json& claims) {
   }
 }
 
+/// A claim's tables (evidence.details.tables: [{"title", "columns": [...], "rows": [[cells]]}]) as Markdown.
+void write_tables(std::ostringstream& md, const json& tables) {
+  for (const auto& table : tables) {
+    md << "**" << table.value("title", "") << "**\n\n|";
+    for (const auto& column : table["columns"]) md << " " << cell(column.get<std::string>()) << " |";
+    md << "\n|";
+    for (std::size_t i = 0; i < table["columns"].size(); ++i) md << "---|";
+    md << "\n";
+    for (const auto& row : table["rows"]) {
+      md << "|";
+      for (const auto& entry : row)
+        md << " " << cell(entry.is_string() ? entry.get<std::string>() : entry.dump()) << " |";
+      md << "\n";
+    }
+    md << "\n";
+  }
+}
+
 void write_claim_section(std::ostringstream& md, const json& c) {
   const std::string id = c["id"];
   md << "<a id=\"" << anchor(id) << "\"></a>\n### `" << id << "`: " << c["verdict"].get<std::string>() << "\n\n*"
@@ -105,7 +123,12 @@ void write_claim_section(std::ostringstream& md, const json& c) {
   if (!c["summary"].get<std::string>().empty()) md << "**Finding.** " << c["summary"].get<std::string>() << "\n\n";
   const json& e = c["evidence"];
   md << "**Evidence.** " << one_line_evidence(e) << ".\n\n";
-  if (!e["details"].empty()) md << "```json\n" << e["details"].dump(2) << "\n```\n\n";
+  json details = e["details"];
+  if (details.is_object() && details.contains("tables")) {
+    write_tables(md, details["tables"]);
+    details.erase("tables");
+  }
+  if (!details.empty()) md << "```json\n" << details.dump(2) << "\n```\n\n";
   if (!e["measurements"].empty())
     md << "Measurements (vary run to run):\n\n```json\n" << e["measurements"].dump(2) << "\n```\n\n";
   if (!c["counterexample"].is_null())
@@ -143,13 +166,21 @@ void write_engine_speed(std::ostringstream& md, const json& speed) {
         "E^F's matrix is factored once, the others are refactorised every frame on a pattern analysed once. "
         "The baseline analyses and factorises the real 2n × 2n matrix from scratch every frame (its assembly "
         "untimed), as common public implementations do.\n\n"
-     << "| energy | set-up (ms) | per frame (ms) | frames/s | target frames/s | baseline per frame (ms) | "
+     << "| energy | set-up (ms) | per frame (ms) | frames/s (95% CI) | target frames/s | baseline per frame (ms) | "
         "× baseline | targets met |\n|---|---|---|---|---|---|---|---|\n";
-  for (const auto& row : speed["rows"])
+  for (const auto& row : speed["rows"]) {
+    const std::string verdict = row.value("verdict", "inconclusive");
+    const json& ci = row.value("frames_per_s_ci95", json());
     md << "| " << row.value("energy", "") << " | " << fixed(row["setup_ms"], 1) << " | " << fixed(row["frame_ms"], 2)
-       << " | " << fixed(row["frames_per_s"], 1) << " | " << fixed(row["target_frames_per_s"], 0) << " | "
-       << fixed(row["baseline_ms"], 1) << " | " << fixed(row["speedup_vs_baseline"], 1) << " | "
-       << (row.value("met", false) ? "yes" : "**no**") << " |\n";
+       << " | " << fixed(row["frames_per_s"], 1)
+       << (ci.is_array() ? " (" + fixed(ci[0], 1) + "–" + fixed(ci[1], 1) + ")" : std::string()) << " | "
+       << fixed(row["target_frames_per_s"], 0) << " | " << fixed(row["baseline_ms"], 1) << " | "
+       << fixed(row["speedup_vs_baseline"], 1) << " | "
+       << (verdict == "reproduced"       ? "yes"
+           : verdict == "not-reproduced" ? "**no**"
+                                         : "undecided")
+       << " |\n";
+  }
   md << "\n";
 }
 
