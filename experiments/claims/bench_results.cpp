@@ -11,7 +11,7 @@ namespace affinterp::claims {
 namespace {
 
 /// The benchmark's own name: run names carry options set in code as extra components
-/// ("exp3/affinterp/min_time:0.200/repeats:5"), which are dropped.
+/// ("exp3/affinterp/min_time:0.200/repeats:10"), which are dropped.
 std::string base_name(const std::string& run_name) {
   std::string name;
   std::size_t begin = 0;

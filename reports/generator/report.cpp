@@ -158,7 +158,9 @@ void write_engine_speed(std::ostringstream& md, const json& speed) {
     return;
   }
   md << "`build/bin/bench_interp` on " << speed.value("mesh", "?") << " (" << fixed(speed.value("triangles", json()), 0)
-     << " triangles), single-threaded, the median of three runs of at least a second each; machine: "
+     << " triangles), single-threaded, the median of ten runs of at least a second each with its 95% bootstrap "
+        "interval (10,000 resamples, seed 2015; experiments/claims/measured.hpp): a target is met when the whole "
+        "interval meets it, missed when none of it does, and undecided otherwise; machine: "
      << cell(speed.value("machine", "?")) << "; " << cell(speed.value("compiler", "?"))
      << ". Targets: E^F ≥ 150 frames/s, E^R ≥ 25 frames/s after set-up, "
         "set-up ≤ 200 ms. Each frame is solved as the n × n complex Hermitian system equivalent to the 2n × 2n "
@@ -207,7 +209,9 @@ std::string render_markdown(const json& doc) {
         "otherwise a sweep whose size, seed and tolerance are stated).\n"
         "- **refuted**: fails; the counterexample can be re-verified from claims.json alone.\n"
         "- **corrected**: fails as printed, holds after the stated correction.\n"
-        "- **reproduced** / **not-reproduced**: a measured figure compared with the paper's.\n"
+        "- **reproduced** / **not-reproduced**: a measured figure compared with the paper's: its 95% bootstrap "
+        "interval over the benchmark's repetitions lies inside / outside the band of values the claim's wording "
+        "allows (stated in the claim's rule); an interval across an edge of the band is inconclusive.\n"
         "- **inconclusive**: not decided; the finding says why.\n"
         "- **pending**: no check implemented yet.\n\n"
         "## Strength\n\n"
@@ -218,7 +222,7 @@ std::string render_markdown(const json& doc) {
         "correction, if any, is checked on a grid or sample only.\n"
         "- **grid only** / **sample only**: checked on the stated grid or random sample (size, seed and "
         "tolerance in the evidence), not proved.\n"
-        "- **measured**: a measured figure, with the spread of repeated runs.\n";
+        "- **measured**: a measured figure, with its 95% bootstrap interval over repeated runs.\n";
 
   std::string group;
   for (const auto& c : claims) {

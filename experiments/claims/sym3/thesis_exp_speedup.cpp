@@ -76,6 +76,9 @@ Outcome check(const ClaimContext& ctx) {
   nlohmann::json ns = nlohmann::json::object();
   for (const auto& [name, value] : results.median)
     if (name.starts_with("exp3/")) ns[name] = value;
+  // The top-level "verdict" of the measurements is the speed-up's alone: name it so beside SD's.
+  outcome.evidence.measurements["speedup_verdict"] = outcome.evidence.measurements["verdict"];
+  outcome.evidence.measurements.erase("verdict");
   outcome.evidence.measurements["sd_between"] = {{"diag_over_sd", to_json(over_sd, faster)},
                                                  {"sd_over_improved_sd", to_json(sd_over, faster)},
                                                  {"verdict", to_string(sd_between)}};
