@@ -31,7 +31,10 @@ std::string_view to_string(Judgement j);
 
 struct Score {
   Judgement judgement = Judgement::reference_too_wide;
-  double error = 0;        ///< the certified relative Frobenius error ‖X − exp S‖_F / ‖exp S‖_F (mid)
+  /// The certified error ‖X − exp S‖_F / max(‖exp S‖_F, 2⁻¹⁰²²) (mid): the relative Frobenius error, measured
+  /// against the smallest normal double where exp S lies below it (there double results are only resolved
+  /// to 2⁻¹⁰⁷⁴, so a relative error would call every algorithm wrong).
+  double error = 0;
   double error_upper = 0;  ///< its rigorous upper bound (for error_not_certified too)
   /// The certified absolute error over ours' bound 2·10⁻¹⁵ max(1, ‖S‖₂) ‖exp S‖_F + 2⁻¹⁰⁷²
   /// (theory/sym3/affinterp.hpp); 0 unless judgement == certified.
