@@ -449,8 +449,9 @@ void draw_peer_table(const ClaimContext& ctx, const std::vector<FamilySweep>& sw
               "-3 '#d7301f', 0 '#7f0000', 1 '#7f0000', 1.01 'black', 2 'black')\n"
               "set bmargin 9\nset lmargin 18\n"
               "plot $cells using 1:2:3 with image notitle, "
-              "$cells using 1:2:($3 > 1.5 ? 'NaN' : sprintf('%.0f', $3)) with labels font ',7' tc rgb '#333333' "
-              "notitle\n")
+              "$cells using 1:2:($3 > 1.5 ? 'NaN' : $3 >= 1 ? '≥1' : sprintf('%.0f', $3)):($3 > -4.5 ? 0xffffff : "
+              "0x333333) "
+              "with labels font ',7' tc rgb variable notitle\n")
           .render();
   for (const auto& f : files) outcome.figures.push_back(RunSettings::figure_ref(f));
 }
