@@ -43,10 +43,12 @@ TEST(Report, TableFirstThenSectionsThenEnvironment) {
 
 TEST(Report, ClaimTablesAreRenderedAsMarkdownNotAsJson) {
   nlohmann::json details = {{"worst", 1e-15},
+                            {"peers", {{"spread", {{"ours", 1e-16}, {"theirs", 2e-14}}}}},
                             {"tables",
                              {{{"title", "Peer table"},
                                {"columns", {"family", "ours", "theirs"}},
-                               {"rows", {{"spread", "1.0e-16", "2.0e-14; **3 NaN/∞**"}}}}}}};
+                               {"rows", {{"spread", "1.0e-16", "2.0e-14; **3 NaN/∞**"}}},
+                               {"replaces", {"peers"}}}}}};
   const nlohmann::json claim = {{"id", "thesis.exp.accuracy"},
                                 {"group", "Thesis ch. 3"},
                                 {"where", "thesis §3.4"},
@@ -72,4 +74,5 @@ TEST(Report, ClaimTablesAreRenderedAsMarkdownNotAsJson) {
       << md;
   EXPECT_NE(md.find("\"worst\": 1e-15"), std::string::npos) << md;
   EXPECT_EQ(md.find("\"tables\""), std::string::npos) << md;
+  EXPECT_EQ(md.find("\"peers\""), std::string::npos) << md;  // the table stands for it
 }

@@ -98,7 +98,8 @@ void write_summary_table(std::ostringstream& md, const json& claims) {
   }
 }
 
-/// A claim's tables (evidence.details.tables: [{"title", "columns": [...], "rows": [[cells]]}]) as Markdown.
+/// A claim's tables (evidence.details.tables: [{"title", "columns": [...], "rows": [[cells]], "replaces": [keys of
+/// details the table stands for in the report]}]) as Markdown.
 void write_tables(std::ostringstream& md, const json& tables) {
   for (const auto& table : tables) {
     md << "**" << table.value("title", "") << "**\n\n|";
@@ -126,6 +127,9 @@ void write_claim_section(std::ostringstream& md, const json& c) {
   json details = e["details"];
   if (details.is_object() && details.contains("tables")) {
     write_tables(md, details["tables"]);
+    // A table stands for the details it names under "replaces" (claims.json keeps them in full).
+    for (const auto& table : details["tables"])
+      for (const auto& key : table.value("replaces", json::array())) details.erase(key.get<std::string>());
     details.erase("tables");
   }
   if (!details.empty()) md << "```json\n" << details.dump(2) << "\n```\n\n";
