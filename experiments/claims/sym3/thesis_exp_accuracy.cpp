@@ -51,7 +51,7 @@ const ClaimDeclaration claim{{
 //   and wrong results, each with a matrix) per family and algorithm. Draws error against eigenvalue gap and the peer
 //   table.
 // Sizes: quick 12 matrices per family; full 1000 (52,000 certified references at about 0.15 ms each, and
-//   12 Boost cross-checks per family at about 1 ms each: 28 s on 2 shared cores).
+//   12 Boost cross-checks per family at about 1 ms each: 12 to 28 s on 2 shared cores).
 
 /// The thesis's statement: with eigenvalues closer than 10⁻⁶ treated as equal, the improved spectral
 /// decomposition has error below 10⁻⁶ for eigenvalues in [0, 3].
