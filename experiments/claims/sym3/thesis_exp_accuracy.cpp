@@ -9,8 +9,6 @@
 #include "theory/sym3/exp_batch.hpp"
 #include "theory/sym3/reference.hpp"
 
-#include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -645,7 +643,7 @@ Outcome check(const ClaimContext& ctx) {
         {"met", own_worst_ratio <= 1 && own_failures == 0}}},
   };
   if (outside > 0)
-    throw std::runtime_error("thesis.exp.accuracy: " + std::to_string(outside) +
+    throw std::runtime_error(std::string(ctx.claim_id) + ": " + std::to_string(outside) +
                              " Boost references lie outside Arb's balls: one of the two references is wrong");
 
   const std::string printed_text =
