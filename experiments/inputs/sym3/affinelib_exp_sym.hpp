@@ -2,7 +2,7 @@
 // A peer: Kaji's AffineLib expSym, the symmetric exponential by spectral decomposition that accompanies
 // Kaji et al. SCA 2012 (github.com/shizuo-kaji/AffineLib, affinelib.h, AffineLib::expSym, version 0.20,
 // Nov. 2013, MIT licence; read at commit 2bb531a0faeb748de30664ebd064aa06abaa163d), re-implemented step by
-// step from its published algorithm for the peer table of thesis.exp.accuracy.
+// step from its published algorithm for the peer table of the accuracy sweep (thesis §3.4).
 //
 // The algorithm, as published: with ‖S‖²_F < 10⁻⁵ it returns I + S. Otherwise it takes the eigenvalues
 // λ₀ ≤ λ₁ ≤ λ₂ from Eigen's closed-form solver (computeDirect, eigenvalues only) and, treating eigenvalues
