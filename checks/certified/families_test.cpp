@@ -115,5 +115,37 @@ TEST(CertifiedFamilies, WholeDoubleRangeIsDecided) {
   EXPECT_GT(cross_checked, 10);
 }
 
+// The 50-digit Boost references that thesis.exp.accuracy keeps as a cross-check lie in Arb's balls (widened
+// by their own error, about 10⁻⁴⁸ of ‖exp S‖_F) on every family they cover.
+TEST(CertifiedFamilies, FiftyDigitReferencesLieInTheBalls) {
+  for (const Family& family : sym3::families()) {
+    if (family.whole_double_range) continue;
+    for (const Mat3& S : family.draw(family, kSeed, 4)) {
+      const CertifiedMatrix e = certified::exp(S);
+      ASSERT_EQ(e.status, Status::certified) << family.name;
+      const sym3::Mat3R50 reference = sym3::reference_exp(S);
+      Mat3R100 E;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) E(i, j) = Real100(reference(i, j));
+      EXPECT_TRUE(contains(e.value, E, Real100("1e-45") * frobenius(E))) << family.name;
+    }
+  }
+}
+
+// The far-apart family (λmax − λmid > 709, λmax across exp's overflow) is decided everywhere: exp S
+// overflows for some matrices and is certified finite for the others.
+TEST(CertifiedFamilies, FarApartFamilyIsDecided) {
+  const auto family = std::ranges::find(sym3::families(), std::string("far-apart"), &Family::name);
+  ASSERT_NE(family, sym3::families().end());
+  int overflows = 0, finite = 0;
+  for (const Mat3& S : family->draw(*family, kSeed, 40)) {
+    const CertifiedMatrix e = certified::exp(S);
+    ASSERT_NE(e.status, Status::too_wide);
+    (e.status == Status::overflows ? overflows : finite) += 1;
+  }
+  EXPECT_GT(overflows, 0);
+  EXPECT_GT(finite, 0);
+}
+
 }  // namespace
 }  // namespace affinterp::certified

@@ -13,15 +13,33 @@ namespace {
 
 namespace fs = std::filesystem;
 
-nlohmann::json median(const std::string& name, double ms, double triangles = 0) {
-  nlohmann::json run = {{"name", name + "/min_time:1.000/repeats:3_median"},
-                        {"run_name", name + "/min_time:1.000/repeats:3"},
-                        {"run_type", "aggregate"},
-                        {"aggregate_name", "median"},
-                        {"real_time", ms},
-                        {"time_unit", "ms"}};
-  if (triangles > 0) run["triangles"] = triangles;
-  return run;
+/// Ten repetitions spread evenly over ms · (1 ± spread), then their median aggregate, as bench_interp writes
+/// them.
+nlohmann::json repeated(const std::string& name, double ms, double triangles = 0, double spread = 0.01) {
+  nlohmann::json runs = nlohmann::json::array();
+  const std::string run_name = name + "/min_time:1.000/repeats:10";
+  for (int i = 0; i < 10; ++i)
+    runs.push_back({{"name", run_name},
+                    {"run_name", run_name},
+                    {"run_type", "iteration"},
+                    {"repetition_index", i},
+                    {"real_time", ms * (1 + spread * (2.0 * i / 9 - 1))},
+                    {"time_unit", "ms"}});
+  runs.push_back({{"name", run_name + "_median"},
+                  {"run_name", run_name},
+                  {"run_type", "aggregate"},
+                  {"aggregate_name", "median"},
+                  {"real_time", ms},
+                  {"time_unit", "ms"}});
+  if (triangles > 0)
+    for (auto& run : runs) run["triangles"] = triangles;
+  return runs;
+}
+
+nlohmann::json concatenated(std::initializer_list<nlohmann::json> parts) {
+  nlohmann::json all = nlohmann::json::array();
+  for (const auto& part : parts) all.insert(all.end(), part.begin(), part.end());
+  return all;
 }
 
 fs::path write_bench(const nlohmann::json& benchmarks) {
@@ -32,10 +50,10 @@ fs::path write_bench(const nlohmann::json& benchmarks) {
 }
 
 TEST(EngineSpeed, JudgesEachEnergyAgainstItsTargets) {
-  const fs::path file =
-      write_bench({median("setup/F/mesh", 120, 1000), median("frame/F/mesh", 5.0), median("frame_refactor/F/mesh", 100),
-                   median("setup/R/mesh", 250, 1000), median("frame/R/mesh", 50.0), median("setup/S/mesh", 90, 1000),
-                   median("frame/S/mesh", 60.0)});
+  const fs::path file = write_bench(concatenated({repeated("setup/F/mesh", 120, 1000), repeated("frame/F/mesh", 5.0),
+                                                  repeated("frame_refactor/F/mesh", 100),
+                                                  repeated("setup/R/mesh", 250, 1000), repeated("frame/R/mesh", 50.0),
+                                                  repeated("setup/S/mesh", 90, 1000), repeated("frame/S/mesh", 60.0)}));
   const nlohmann::json table = engine_speed(file);
   fs::remove(file);
   ASSERT_EQ(table["rows"].size(), 3u);
@@ -45,18 +63,43 @@ TEST(EngineSpeed, JudgesEachEnergyAgainstItsTargets) {
   EXPECT_EQ(F["energy"], "F");
   EXPECT_DOUBLE_EQ(F["frames_per_s"].get<double>(), 200.0);
   EXPECT_DOUBLE_EQ(F["speedup_vs_baseline"].get<double>(), 20.0);
-  EXPECT_TRUE(F["met"].get<bool>());
+  EXPECT_EQ(F["verdict"], "reproduced");
+  EXPECT_LT(F["frames_per_s_ci95"][0].get<double>(), 200.0);
+  EXPECT_GT(F["frames_per_s_ci95"][1].get<double>(), 200.0);
+  EXPECT_EQ(F["repetitions"], 10);
   const auto& R = table["rows"][1];  // 20 frames/s < 25 and set-up 250 ms > 200 ms
-  EXPECT_FALSE(R["met"].get<bool>());
+  EXPECT_EQ(R["verdict"], "not-reproduced");
   EXPECT_TRUE(R["baseline_ms"].is_null());
   const auto& S = table["rows"][2];  // no frame-rate target; set-up within 0.2 s
   EXPECT_TRUE(S["target_frames_per_s"].is_null());
-  EXPECT_TRUE(S["met"].get<bool>());
+  EXPECT_EQ(S["verdict"], "reproduced");
 
   const std::string md = report::render_markdown(
       {{"claims", nlohmann::json::array()}, {"environment", nlohmann::json::object()}, {"engine_speed", table}});
-  EXPECT_NE(md.find("| F | 120.0 | 5.00 | 200.0 | 150 | 100.0 | 20.0 | yes |"), std::string::npos) << md;
-  EXPECT_NE(md.find("| R | 250.0 | 50.00 | 20.0 | 25 | — | — | **no** |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| F | 120.0 | 5.00 | 200.0 ("), std::string::npos) << md;
+  EXPECT_NE(md.find(") | 150 | 100.0 | 20.0 | yes |"), std::string::npos) << md;
+  EXPECT_NE(md.find(") | 25 | — | — | **no** |"), std::string::npos) << md;
+}
+
+TEST(EngineSpeed, AnIntervalAcrossATargetIsUndecided) {
+  // 150 frames/s, E^F's target, measured with ±10% spread; and a file with aggregates only.
+  const fs::path file =
+      write_bench(concatenated({repeated("setup/F/mesh", 120, 1000), repeated("frame/F/mesh", 1000.0 / 150, 0, 0.1)}));
+  const nlohmann::json table = engine_speed(file);
+  fs::remove(file);
+  EXPECT_EQ(table["rows"][0]["verdict"], "inconclusive");
+  const std::string md = report::render_markdown(
+      {{"claims", nlohmann::json::array()}, {"environment", nlohmann::json::object()}, {"engine_speed", table}});
+  EXPECT_NE(md.find("| undecided |"), std::string::npos) << md;
+
+  nlohmann::json aggregates_only = nlohmann::json::array();
+  for (const auto& run : concatenated({repeated("setup/F/mesh", 120, 1000), repeated("frame/F/mesh", 5.0)}))
+    if (run["run_type"] == "aggregate") aggregates_only.push_back(run);
+  const fs::path old_file = write_bench(aggregates_only);
+  const nlohmann::json old_table = engine_speed(old_file);
+  fs::remove(old_file);
+  EXPECT_EQ(old_table["rows"][0]["verdict"], "inconclusive");
+  EXPECT_TRUE(old_table["rows"][0]["frames_per_s_ci95"].is_null());
 }
 
 TEST(EngineSpeed, AbsentBenchmarkIsSaidInTheReport) {

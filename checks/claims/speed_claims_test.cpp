@@ -1,5 +1,6 @@
 // The speed verdicts of thesis §3.4 (experiments/claims/sym3/thesis_*_speedup.cpp) on synthetic benchmark
-// JSON: absent data is inconclusive, and the verdict follows the measured ratio both ways.
+// JSON: absent data is inconclusive, and the verdict follows the ratio's bootstrap interval against the
+// band the wording allows: inside, outside, straddling an edge, or without enough repetitions.
 #include "experiments/claims/registry.hpp"
 
 #include <gtest/gtest.h>
@@ -15,9 +16,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// Writes bench_<name>.json in Google Benchmark's format (median aggregates; run names carrying the
-/// options set in code, as bench_exp3 writes them) and returns its folder.
-fs::path write_bench(const std::string& bench, const std::string& counter, const std::map<std::string, double>& times) {
+/// Writes bench_<name>.json in Google Benchmark's format, as bench_exp3 writes it: `repetitions` runs per
+/// benchmark spread evenly over value · (1 ± spread) (median: value), then the mean and median aggregates;
+/// run names carry the options set in code. Returns its folder.
+fs::path write_bench(const std::string& bench, const std::string& counter, const std::map<std::string, double>& times,
+                     double spread = 0.01, int repetitions = 10) {
   // One folder per test and call: CTest runs the tests in parallel processes.
   static int call = 0;
   const fs::path dir =
@@ -27,13 +30,22 @@ fs::path write_bench(const std::string& bench, const std::string& counter, const
   fs::create_directories(dir);
   nlohmann::json runs = nlohmann::json::array();
   for (const auto& [name, value] : times) {
-    runs.push_back({{"name", name + "_mean"},
-                    {"run_name", name + "/min_time:0.200/repeats:5"},
+    const std::string run_name = name + "/min_time:0.200/repeats:" + std::to_string(repetitions);
+    for (int i = 0; i < repetitions; ++i) {
+      const double offset = repetitions > 1 ? 2.0 * i / (repetitions - 1) - 1 : 0;
+      runs.push_back({{"name", run_name},
+                      {"run_name", run_name},
+                      {"run_type", "iteration"},
+                      {"repetition_index", i},
+                      {counter, value * (1 + spread * offset)}});
+    }
+    runs.push_back({{"name", run_name + "_mean"},
+                    {"run_name", run_name},
                     {"run_type", "aggregate"},
                     {"aggregate_name", "mean"},
                     {counter, 2 * value}});
-    runs.push_back({{"name", name + "_median"},
-                    {"run_name", name + "/min_time:0.200/repeats:5"},
+    runs.push_back({{"name", run_name + "_median"},
+                    {"run_name", run_name},
                     {"run_type", "aggregate"},
                     {"aggregate_name", "median"},
                     {counter, value}});
@@ -67,11 +79,37 @@ TEST(SpeedClaims, EigenvalueVerdictFollowsTheMeasuredRatio) {
   auto near = write_bench("bench_exp3", "ns_per_matrix", {{"eig3/eigen-qr", 100}, {"eig3/viete", 30}});
   const Outcome reproduced = check_eig_speedup(near);
   EXPECT_EQ(reproduced.verdict, Verdict::reproduced) << reproduced.summary;
-  EXPECT_NEAR(reproduced.evidence.measurements["measured_ratio"].get<double>(), 100.0 / 30, 1e-12);
-  EXPECT_EQ(reproduced.evidence.measurements["machine"]["cpu"], "Test CPU");
+  const nlohmann::json& m = reproduced.evidence.measurements;
+  EXPECT_NEAR(m["ratio"].get<double>(), 100.0 / 30, 1e-12);
+  EXPECT_LT(m["ratio_ci95"][0].get<double>(), 100.0 / 30);
+  EXPECT_GT(m["ratio_ci95"][1].get<double>(), 100.0 / 30);
+  EXPECT_NEAR(m["band"][0].get<double>(), 3.2 / 1.5, 1e-12);
+  EXPECT_NEAR(m["band"][1].get<double>(), 3.2 * 1.5, 1e-12);
+  EXPECT_EQ(m["repetitions"], 10);
+  EXPECT_EQ(m["machine"]["cpu"], "Test CPU");
 
   auto far = write_bench("bench_exp3", "ns_per_matrix", {{"eig3/eigen-qr", 100}, {"eig3/viete", 90}});
   EXPECT_EQ(check_eig_speedup(far).verdict, Verdict::not_reproduced);
+}
+
+TEST(SpeedClaims, AnIntervalAcrossABandEdgeIsInconclusive) {
+  // Ratio 4.8 = 3.2 · 1.5, the band's upper edge, measured with ±10% spread.
+  auto edge = write_bench("bench_exp3", "ns_per_matrix", {{"eig3/eigen-qr", 480}, {"eig3/viete", 100}}, 0.1);
+  const Outcome outcome = check_eig_speedup(edge);
+  EXPECT_EQ(outcome.verdict, Verdict::inconclusive) << outcome.summary;
+  EXPECT_LT(outcome.evidence.measurements["ratio_ci95"][0].get<double>(), 4.8);
+  EXPECT_GT(outcome.evidence.measurements["ratio_ci95"][1].get<double>(), 4.8);
+  // The same ratio measured tightly just inside the band is reproduced.
+  auto inside = write_bench("bench_exp3", "ns_per_matrix", {{"eig3/eigen-qr", 470}, {"eig3/viete", 100}}, 0.001);
+  EXPECT_EQ(check_eig_speedup(inside).verdict, Verdict::reproduced);
+}
+
+TEST(SpeedClaims, FewerThanTenRepetitionsAreInconclusive) {
+  auto few = write_bench("bench_exp3", "ns_per_matrix", {{"eig3/eigen-qr", 100}, {"eig3/viete", 30}}, 0.01, 5);
+  const Outcome outcome = check_eig_speedup(few);
+  EXPECT_EQ(outcome.verdict, Verdict::inconclusive) << outcome.summary;
+  EXPECT_TRUE(outcome.evidence.measurements["ratio_ci95"].is_null());
+  EXPECT_NE(outcome.summary.find("no interval"), std::string::npos) << outcome.summary;
 }
 
 TEST(SpeedClaims, ExponentialNeedsPlainSdInBetween) {

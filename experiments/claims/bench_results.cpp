@@ -11,7 +11,7 @@ namespace affinterp::claims {
 namespace {
 
 /// The benchmark's own name: run names carry options set in code as extra components
-/// ("exp3/affinterp/min_time:0.200/repeats:5"), which are dropped.
+/// ("exp3/affinterp/min_time:0.200/repeats:10"), which are dropped.
 std::string base_name(const std::string& run_name) {
   std::string name;
   std::size_t begin = 0;
@@ -59,6 +59,7 @@ std::optional<BenchResults> read_bench_results(const std::filesystem::path& file
     if (!run.contains(counter)) continue;
     // Repeated benchmarks report aggregates: take the median. A single run is its own median.
     const bool aggregate = run.value("run_type", "iteration") == "aggregate";
+    if (!aggregate) results.repetitions[name].push_back(run[counter].get<double>());
     if (aggregate && run.value("aggregate_name", "") != "median") continue;
     if (!aggregate && results.median.contains(name)) continue;
     results.median[name] = run[counter].get<double>();

@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace affinterp::claims {
 
@@ -14,6 +15,9 @@ struct BenchResults {
   std::string compiler, flags;
   /// Per benchmark name (without aggregate suffix): the median over repetitions of `counter`.
   std::map<std::string, double, std::less<>> median;
+  /// Per benchmark name: `counter` of each repetition, in run order (empty where the file holds only
+  /// aggregates).
+  std::map<std::string, std::vector<double>, std::less<>> repetitions;
   /// Benchmarks that reported an error (e.g. missing data), with the message.
   std::map<std::string, std::string, std::less<>> errors;
 

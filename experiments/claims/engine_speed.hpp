@@ -9,9 +9,12 @@
 
 namespace affinterp::claims {
 
-/// {"file", "machine", "compiler", "flags", "mesh", "triangles", "rows": [{"energy", "setup_ms",
-/// "setup_target_ms", "frame_ms", "frames_per_s", "target_frames_per_s" (null: none), "baseline_ms"
-/// (null: not measured), "speedup_vs_baseline", "met"}]}; null when `bench_file` does not exist.
+/// {"file", "machine", "compiler", "flags", "mesh", "triangles", "rows": [{"energy", "setup_ms", "setup_ms_ci95",
+/// "setup_target_ms", "frame_ms", "frames_per_s", "frames_per_s_ci95", "target_frames_per_s" (null: none),
+/// "repetitions", "baseline_ms" (null: not measured), "speedup_vs_baseline", "verdict"}]}; null when
+/// `bench_file` does not exist. The medians' 95% bootstrap intervals (measured.hpp; null with fewer than 10
+/// repetitions) decide each row as the speed claims are decided: "reproduced" (targets met) when every
+/// interval lies within its target, "not-reproduced" when one lies outside, else "inconclusive".
 nlohmann::json engine_speed(const std::filesystem::path& bench_file);
 
 }  // namespace affinterp::claims

@@ -19,7 +19,6 @@
 namespace affinterp::bench {
 namespace {
 
-constexpr int kRepetitions = 5;
 constexpr double kMinSeconds = 0.5;
 
 /// The dragon's deformation, set up on first use; null when the CGAL data archive is absent.
@@ -57,7 +56,7 @@ void frame(benchmark::State& state, const sym3::SymExpBatch& exp) {
 
 void register_all() {
   auto configure = [](benchmark::internal::Benchmark* b) {
-    b->Repetitions(kRepetitions)->ReportAggregatesOnly(true)->MinTime(kMinSeconds)->Unit(benchmark::kMillisecond);
+    b->Repetitions(kRepetitions)->DisplayAggregatesOnly(true)->MinTime(kMinSeconds)->Unit(benchmark::kMillisecond);
   };
   for (const auto& variant : sym3::exp_variants())
     configure(benchmark::RegisterBenchmark(("app/" + variant.name).c_str(), frame, variant.exp));

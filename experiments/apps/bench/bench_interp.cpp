@@ -126,22 +126,22 @@ void frame_refactor(benchmark::State& state, Energy energy) {
   state.counters["frames/s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
-/// Three runs of at least a second each, reported as mean, median and spread: the machine is shared.
-void median_of_three(benchmark::internal::Benchmark* b) {
-  b->Unit(benchmark::kMillisecond)->MinTime(1.0)->Repetitions(3)->ReportAggregatesOnly(true);
+/// Ten runs of at least a second each (kRepetitions), every one kept in the JSON file for the bootstrap
+/// intervals of the targets, reported as mean, median and spread: the machine is shared.
+void repeated(benchmark::internal::Benchmark* b) {
+  b->Unit(benchmark::kMillisecond)->MinTime(1.0)->Repetitions(bench::kRepetitions)->DisplayAggregatesOnly(true);
 }
 
 void register_all() {
   const std::string mesh = workload().name;
   for (const Energy energy : {Energy::frobenius, Energy::similarity, Energy::procrustes, Energy::blend}) {
     const std::string e = global::to_string(energy);
-    benchmark::RegisterBenchmark(("setup/" + e + "/" + mesh).c_str(), set_up, energy)->Apply(median_of_three);
-    benchmark::RegisterBenchmark(("frame/" + e + "/" + mesh).c_str(), frame, energy)->Apply(median_of_three);
+    benchmark::RegisterBenchmark(("setup/" + e + "/" + mesh).c_str(), set_up, energy)->Apply(repeated);
+    benchmark::RegisterBenchmark(("frame/" + e + "/" + mesh).c_str(), frame, energy)->Apply(repeated);
   }
   for (const Energy energy : {Energy::frobenius, Energy::similarity}) {
     const std::string e = global::to_string(energy);
-    benchmark::RegisterBenchmark(("frame_refactor/" + e + "/" + mesh).c_str(), frame_refactor, energy)
-        ->Apply(median_of_three);
+    benchmark::RegisterBenchmark(("frame_refactor/" + e + "/" + mesh).c_str(), frame_refactor, energy)->Apply(repeated);
   }
 }
 

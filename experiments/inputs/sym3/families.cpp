@@ -182,6 +182,17 @@ std::vector<Mat3> draw_full_range(const Family&, std::uint64_t seed, std::size_t
   return out;
 }
 
+/// λmax − λmid > 709: λmax uniform in [700, 712] (across exp's overflow, log DBL_MAX ≈ 709.78, which a
+/// spread eigenvector lifts by up to log 3), λmid = λmax − u with u uniform in [709.5, 1100], λmin uniform
+/// in [λmid − 400, λmid]. e^{λmid}/e^{λmax} is below the smallest normal double.
+std::vector<Mat3> draw_far_apart(const Family&, std::uint64_t seed, std::size_t count) {
+  return rotated(seed, count, [](Rng& rng) {
+    const double top = rng.uniform(700, 712);
+    const double middle = top - rng.uniform(709.5, 1100);
+    return Vec3(rng.uniform(middle - 400, middle), middle, top);
+  });
+}
+
 std::string gap_name(double gap) {
   if (gap == 0) return "0";
   std::ostringstream name;
@@ -247,13 +258,20 @@ const std::vector<Family>& families() {
       f.push_back({"triple-gap-" + gap_name(gap),
                    "eigenvalues λ, λ + " + gap_name(gap) + ", λ + 2·" + gap_name(gap) + ", in [0, 3], random basis",
                    gap, true, draw_triple});
-    // Last, so that every family before it keeps its index (the claims seed each family by it).
+    // Last, so that every family before them keeps its index (the claims seed each family by it).
     f.push_back({"full-range",
                  "the whole double range: subnormal and tiny entries, 10^±300 mixed scales, squares that overflow, "
                  "λmax around exp's overflow (709.78) and underflow (−745), random sign/mantissa/exponent entries",
                  {},
                  false,
                  draw_full_range,
+                 true});
+    f.push_back({"far-apart",
+                 "λmax − λmid > 709: λmax in [700, 712] (across exp's overflow), λmid = λmax − [709.5, 1100], "
+                 "λmin in [λmid − 400, λmid], random basis",
+                 {},
+                 false,
+                 draw_far_apart,
                  true});
     return f;
   }();

@@ -49,7 +49,8 @@ const std::vector<double>& cluster_gaps();
 
 /// Every family: the thesis distribution, spectra spread over [0, 3], clustered pairs and triples at
 /// every gap of cluster_gaps() (inside [0, 3]), wide spectra (ratio 10¹²), large |λ| (up to 700),
-/// diagonal, nearly diagonal, multiples of the identity, zero, and last "full-range" (whole_double_range).
+/// diagonal, nearly diagonal, multiples of the identity, zero, and last the two whole_double_range families:
+/// "full-range" and "far-apart" (λmax − λmid > 709, λmax across exp's overflow).
 const std::vector<Family>& families();
 
 }  // namespace affinterp::sym3

@@ -1,0 +1,98 @@
+// The percentile bootstrap of experiments/claims/bootstrap.hpp: the same interval for a seed, intervals that
+// cover a known median about 95% of the time with the width the normal theory predicts, and the placement
+// of an interval against a band.
+#include "experiments/claims/bootstrap.hpp"
+
+#include "experiments/support/random.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace affinterp::claims {
+namespace {
+
+/// n draws from the normal distribution N(mu, sigma²) (Box–Muller).
+std::vector<double> normal_sample(Rng& rng, std::size_t n, double mu, double sigma) {
+  std::vector<double> x(n);
+  for (double& v : x) {
+    const double u1 = 1 - rng.uniform(0, 1), u2 = rng.uniform(0, 1);
+    v = mu + sigma * std::sqrt(-2 * std::log(u1)) * std::cos(2 * std::numbers::pi * u2);
+  }
+  return x;
+}
+
+TEST(Bootstrap, Median) {
+  EXPECT_EQ(median(std::vector<double>{3, 1, 2}), 2);
+  EXPECT_EQ(median(std::vector<double>{4, 1, 3, 2}), 2.5);
+  EXPECT_THROW(median(std::vector<double>{}), std::invalid_argument);
+}
+
+TEST(Bootstrap, IsDeterministicForASeed) {
+  const std::vector<double> slow = {10, 11, 12, 10.5, 11.5, 13, 10.2, 11.1, 12.4, 10.9};
+  const std::vector<double> fast = {5, 5.5, 5.2, 5.1, 6, 5.3, 5.05, 5.4, 5.6, 5.25};
+  const Interval a = ratio_of_medians_ci95(slow, fast, 42), b = ratio_of_medians_ci95(slow, fast, 42);
+  EXPECT_EQ(a.lo, b.lo);
+  EXPECT_EQ(a.hi, b.hi);
+  const Interval c = ratio_of_medians_ci95(slow, fast, 43);
+  EXPECT_TRUE(a.lo != c.lo || a.hi != c.hi);  // another seed, another resampling
+  const double ratio = median(slow) / median(fast);
+  EXPECT_LT(a.lo, ratio);
+  EXPECT_GT(a.hi, ratio);
+}
+
+TEST(Bootstrap, ConstantSamplesGiveAPointInterval) {
+  const Interval ci = ratio_of_medians_ci95(std::vector<double>(10, 6.0), std::vector<double>(12, 2.0), 1);
+  EXPECT_EQ(ci.lo, 3.0);
+  EXPECT_EQ(ci.hi, 3.0);
+}
+
+TEST(Bootstrap, CoversAKnownMedianAbout95PercentOfTheTime) {
+  // 400 samples of 60 draws from N(5, 1): the 95% interval of the median should contain 5 in about 95% of
+  // them (the percentile bootstrap of a median is slightly conservative or liberal at small n; a binomial
+  // 400 × 0.95 has standard deviation 4.4, so 88%–99% is a wide margin), and its mean width should be near
+  // the normal theory's 2 · 1.96 · σ √(π/2) / √n = 0.634.
+  Rng rng(2015);
+  int covered = 0;
+  double width = 0;
+  constexpr int trials = 400;
+  for (int t = 0; t < trials; ++t) {
+    const Interval ci = bootstrap_interval(
+        {normal_sample(rng, 60, 5, 1)}, [](const auto& s) { return median(s[0]); }, rng.bits(), 0.95, 1000);
+    covered += ci.lo <= 5 && 5 <= ci.hi;
+    width += (ci.hi - ci.lo) / trials;
+  }
+  EXPECT_GE(covered, static_cast<int>(0.88 * trials));
+  EXPECT_LE(covered, static_cast<int>(0.99 * trials));
+  EXPECT_NEAR(width, 2 * 1.96 * std::sqrt(std::numbers::pi / 2) / std::sqrt(60.0), 0.15);
+}
+
+TEST(Bootstrap, RatioIntervalCoversAKnownRatio) {
+  // Timings N(300, 15²) and N(100, 5²): the ratio of medians is 3.
+  Rng rng(7);
+  int covered = 0;
+  constexpr int trials = 200;
+  for (int t = 0; t < trials; ++t) {
+    const Interval ci = bootstrap_interval(
+        {normal_sample(rng, 20, 300, 15), normal_sample(rng, 20, 100, 5)},
+        [](const auto& s) { return median(s[0]) / median(s[1]); }, rng.bits(), 0.95, 1000);
+    covered += ci.lo <= 3 && 3 <= ci.hi;
+  }
+  EXPECT_GE(covered, static_cast<int>(0.85 * trials));
+}
+
+TEST(Bootstrap, PlacementAgainstABand) {
+  const Interval band{2.0, 4.0};
+  EXPECT_EQ(placement({2.5, 3.5}, band), Placement::inside);
+  EXPECT_EQ(placement({2.0, 4.0}, band), Placement::inside);
+  EXPECT_EQ(placement({4.1, 4.5}, band), Placement::outside);
+  EXPECT_EQ(placement({1.0, 1.9}, band), Placement::outside);
+  EXPECT_EQ(placement({3.5, 4.5}, band), Placement::straddles);
+  EXPECT_EQ(placement({1.5, 2.5}, band), Placement::straddles);
+  EXPECT_EQ(placement({1.0, 5.0}, band), Placement::straddles);
+}
+
+}  // namespace
+}  // namespace affinterp::claims
