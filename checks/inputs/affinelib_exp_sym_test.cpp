@@ -29,10 +29,10 @@ TEST(AffineLibExpSym, SmallMatricesGoToIPlusS) {
 }
 
 TEST(AffineLibExpSym, EveryBranchMatchesTheClosedForm) {
-  for (const Eigen::Vector3d lambda : {Eigen::Vector3d(0.5, 1, 2),   // distinct
-                                       Eigen::Vector3d(1, 1, 2.5),   // λ₀ = λ₁
-                                       Eigen::Vector3d(-1, 2, 2),    // λ₁ = λ₂
-                                       Eigen::Vector3d(3, 3, 3)}) {  // all equal
+  for (const Eigen::Vector3d& lambda : {Eigen::Vector3d(0.5, 1, 2),   // distinct
+                                        Eigen::Vector3d(1, 1, 2.5),   // λ₀ = λ₁
+                                        Eigen::Vector3d(-1, 2, 2),    // λ₁ = λ₂
+                                        Eigen::Vector3d(3, 3, 3)}) {  // all equal
     const auto [S, E] = rotated_pair(lambda);
     // computeDirect's closed-form eigenvalues lose about half the digits at a repeated eigenvalue (√ε).
     EXPECT_LT(relative_error(exp_affinelib(S), E), 1e-7) << lambda.transpose();

@@ -95,39 +95,40 @@ TEST(Report, ScaleTableAndCurveAgainstTheTargets) {
   doc["engine_scale"] = nullptr;
   md = affinterp::report::render_markdown(doc);
   EXPECT_NE(md.find("`reports/bench/bench_scale.json` is absent"), std::string::npos);
+}
 
-  TEST(Report, ClaimTablesAreRenderedAsMarkdownNotAsJson) {
-    nlohmann::json details = {{"worst", 1e-15},
-                              {"peers", {{"spread", {{"ours", 1e-16}, {"theirs", 2e-14}}}}},
-                              {"tables",
-                               {{{"title", "Peer table"},
-                                 {"columns", {"family", "ours", "theirs"}},
-                                 {"rows", {{"spread", "1.0e-16", "2.0e-14; **3 NaN/∞**"}}},
-                                 {"replaces", {"peers"}}}}}};
-    const nlohmann::json claim = {{"id", "thesis.exp.accuracy"},
-                                  {"group", "Thesis ch. 3"},
-                                  {"where", "thesis §3.4"},
-                                  {"statement", "accurate"},
-                                  {"verdict", "corrected"},
-                                  {"summary", ""},
-                                  {"evidence",
-                                   {{"method", "sweep"},
-                                    {"sample_size", 3},
-                                    {"seed", 1},
-                                    {"tolerance", nullptr},
-                                    {"worst_deviation", nullptr},
-                                    {"details", details},
-                                    {"measurements", nlohmann::json::object()}}},
-                                  {"counterexample", nullptr},
-                                  {"correction", nullptr},
-                                  {"figures", nlohmann::json::array()}};
-    const std::string md = affinterp::report::render_markdown(
-        {{"seed", 1}, {"size", "quick"}, {"environment", nlohmann::json::object()}, {"claims", {claim}}});
-    EXPECT_NE(md.find("**Peer table**\n\n| family | ours | theirs |\n|---|---|---|\n| spread | 1.0e-16 | 2.0e-14; **3 "
-                      "NaN/∞** |\n"),
-              std::string::npos)
-        << md;
-    EXPECT_NE(md.find("\"worst\": 1e-15"), std::string::npos) << md;
-    EXPECT_EQ(md.find("\"tables\""), std::string::npos) << md;
-    EXPECT_EQ(md.find("\"peers\""), std::string::npos) << md;  // the table stands for it
-  }
+TEST(Report, ClaimTablesAreRenderedAsMarkdownNotAsJson) {
+  nlohmann::json details = {{"worst", 1e-15},
+                            {"peers", {{"spread", {{"ours", 1e-16}, {"theirs", 2e-14}}}}},
+                            {"tables",
+                             {{{"title", "Peer table"},
+                               {"columns", {"family", "ours", "theirs"}},
+                               {"rows", {{"spread", "1.0e-16", "2.0e-14; **3 NaN/∞**"}}},
+                               {"replaces", {"peers"}}}}}};
+  const nlohmann::json claim = {{"id", "thesis.exp.accuracy"},
+                                {"group", "Thesis ch. 3"},
+                                {"where", "thesis §3.4"},
+                                {"statement", "accurate"},
+                                {"verdict", "corrected"},
+                                {"summary", ""},
+                                {"evidence",
+                                 {{"method", "sweep"},
+                                  {"sample_size", 3},
+                                  {"seed", 1},
+                                  {"tolerance", nullptr},
+                                  {"worst_deviation", nullptr},
+                                  {"details", details},
+                                  {"measurements", nlohmann::json::object()}}},
+                                {"counterexample", nullptr},
+                                {"correction", nullptr},
+                                {"figures", nlohmann::json::array()}};
+  const std::string md = affinterp::report::render_markdown(
+      {{"seed", 1}, {"size", "quick"}, {"environment", nlohmann::json::object()}, {"claims", {claim}}});
+  EXPECT_NE(md.find("**Peer table**\n\n| family | ours | theirs |\n|---|---|---|\n| spread | 1.0e-16 | 2.0e-14; **3 "
+                    "NaN/∞** |\n"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("\"worst\": 1e-15"), std::string::npos) << md;
+  EXPECT_EQ(md.find("\"tables\""), std::string::npos) << md;
+  EXPECT_EQ(md.find("\"peers\""), std::string::npos) << md;  // the table stands for it
+}
