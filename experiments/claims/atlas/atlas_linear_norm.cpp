@@ -58,7 +58,8 @@ Outcome check(const ClaimContext& ctx) {
       .z3_only = {},
       .identities = {},
   };
-  return atlas_outcome(ctx, cell, proof, {{"a", "d", -1, 3, {{"b", 0}, {"c", Rational(1, 2)}}, "b = 0, c = 1/2"}});
+  return atlas_outcome(ctx, cell, proof,
+                       {{"a", "d", -1, 3, {{"b", Rational(1, 4)}, {"c", Rational(1, 4)}}, "b = c = 1/4"}});
 }
 
 }  // namespace
