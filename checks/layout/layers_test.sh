@@ -13,8 +13,8 @@ declare -A allowed=(
   [plots]="theory plots"
   [experiments/support]="experiments/support"
   [experiments/inputs]="theory experiments/support experiments/inputs"
-  [experiments/claims]="theory reports plots experiments/support experiments/inputs experiments/claims"
-  [experiments/apps]="theory reports plots experiments/support experiments/inputs experiments/claims experiments/apps"
+  [experiments/claims]="theory reports plots experiments/support experiments/inputs experiments/proofs experiments/claims"
+  [experiments/apps]="theory reports plots experiments/support experiments/inputs experiments/proofs experiments/claims experiments/apps"
 )
 
 failures=0
