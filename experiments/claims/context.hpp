@@ -1,5 +1,7 @@
 #pragma once
 // The settings a check runs under: the run's size, threads and folders, and the claim's own seed.
+#include "experiments/proofs/identity.hpp"
+
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -21,6 +23,9 @@ struct RunSettings {
   std::filesystem::path figure_dir;
   /// Where Google Benchmark JSON outputs are read from, for measured claims; empty means none.
   std::filesystem::path bench_dir;
+  /// Where checks write the sentence files of their proofs, proof_dir/<claim id>/<name>.<ext> beside the
+  /// deciders' outputs; empty means none are kept.
+  std::filesystem::path proof_dir;
 
   /// `quick` under Size::quick, `full` under Size::full.
   template <class T>
@@ -41,6 +46,10 @@ struct RunSettings {
 struct ClaimContext : RunSettings {
   std::string_view claim_id;
   std::uint64_t seed = 0;  ///< RunContext::seed_for(claim_id)
+
+  /// Where this claim's proof sentences go: proof_dir/<claim id>, named "proofs/<claim id>" in claims.json
+  /// (relative to the report's folder, like figures).
+  proofs::SentenceFiles proof_files() const;
 };
 
 /// A run: the settings and the run's seed, from which each claim's seed is derived.

@@ -23,7 +23,7 @@ struct Node {
   bool denominator_is_one = true;  ///< structurally: d is the constant 1
 };
 
-/// Symbols and functions (read as variables), in order of first appearance.
+/// Symbols and functions (read as variables), indexed in the order they are first asked for.
 class Variables {
  public:
   std::size_t index(const GiNaC::ex& e) {
@@ -43,12 +43,15 @@ class Variables {
   std::vector<std::string> names_;
 };
 
-void collect(const GiNaC::ex& e, Variables& variables) {
+/// The symbols and functions of `e`, by name.
+void collect(const GiNaC::ex& e, std::map<std::string, GiNaC::ex>& found) {
   if (GiNaC::is_a<GiNaC::symbol>(e) || GiNaC::is_a<GiNaC::function>(e)) {
-    variables.index(e);
+    std::ostringstream name;
+    name << e;
+    found.emplace(name.str(), e);
     return;
   }
-  for (std::size_t i = 0; i < e.nops(); ++i) collect(e.op(i), variables);
+  for (std::size_t i = 0; i < e.nops(); ++i) collect(e.op(i), found);
 }
 
 Integer to_integer(const GiNaC::numeric& n) {
@@ -253,8 +256,10 @@ GridVerdict grid_check(const GiNaC::ex& lhs, const GiNaC::ex& rhs, std::uint64_t
   } else {
     entries.emplace_back(lhs, rhs);
   }
+  std::map<std::string, GiNaC::ex> found;  // by name, so that the grid's variables come in alphabetical order
+  for (const auto& [l, r] : entries) collect(l, found), collect(r, found);
   Variables variables;
-  for (const auto& [l, r] : entries) collect(l, variables), collect(r, variables);
+  for (const auto& [name, e] : found) variables.index(e);
   std::vector<EntryCheck> checks;
   for (const auto& [l, r] : entries)
     checks.push_back({Program(l, variables), Program(r, variables), {}, {}, {}, {}, {}});

@@ -3,7 +3,9 @@
 // Viète and spectral formulas) can be instantiated over symbols: the identities of the proofs are then built
 // from the very functions the claims check, and a bug in theory/ shows up in the proof.
 #include <ginac/ginac.h>
+
 #include <Eigen/Core>
+#include <string>
 
 namespace Eigen {
 
@@ -38,6 +40,15 @@ SymbolicMatrix<Rows, Cols> symbolic_matrix(const std::string& prefix) {
   for (int r = 0; r < Rows; ++r)
     for (int c = 0; c < Cols; ++c) M(r, c) = GiNaC::symbol(prefix + std::to_string(r + 1) + std::to_string(c + 1));
   return M;
+}
+
+/// The same matrix as a GiNaC::matrix (an expression), as the identity prover compares matrices.
+template <int Rows, int Cols>
+GiNaC::matrix to_ginac(const SymbolicMatrix<Rows, Cols>& M) {
+  GiNaC::matrix m(Rows, Cols);
+  for (int r = 0; r < Rows; ++r)
+    for (int c = 0; c < Cols; ++c) m(r, c) = M(r, c);
+  return m;
 }
 
 }  // namespace affinterp::proofs

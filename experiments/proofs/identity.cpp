@@ -88,8 +88,8 @@ GiNaC::ex column(const std::vector<GiNaC::ex>& list) {
 
 }  // namespace
 
-claims::ProofSentence prove_identity(const Identity& identity, const ProofFiles& files) {
-  const std::string id = files.ref.substr(files.ref.find_last_of('/') + 1);
+claims::ProofSentence prove_identity(const Identity& identity, const SentenceFiles& files) {
+  const std::string id = files.reference.substr(files.reference.find_last_of('/') + 1);
   const Script script = write_script(id, identity);
   if (!files.dir.empty()) {
     std::filesystem::create_directories(files.dir);
@@ -122,11 +122,28 @@ claims::ProofSentence prove_identity(const Identity& identity, const ProofFiles&
     throw std::runtime_error("identity " + id + "/" + identity.name + ": GiNaC and the exact grid disagree");
 
   const std::string result = grid.zero ? "zero" : "non-zero";
-  const std::string script_file = files.ref + "/" + identity.name + ".ginsh";
+  const std::string script_file = files.reference + "/" + identity.name + ".ginsh";
   return {identity.name,
           identity.meaning,
           result,
           {{"ginac", script_file, result, ginac_seconds}, {"exact-grid", script_file, result, grid_seconds}}};
+}
+
+std::vector<claims::ProofSentence> prove_identities(const std::vector<Identity>& identities,
+                                                    const SentenceFiles& files) {
+  std::vector<claims::ProofSentence> sentences;
+  for (const Identity& identity : identities) sentences.push_back(prove_identity(identity, files));
+  return sentences;
+}
+
+claims::Proof identity_proof(std::string scope, std::string method, std::vector<claims::ProofSentence> sentences) {
+  return {std::move(scope), std::move(method), {"ginac", "exact-grid"}, std::move(sentences)};
+}
+
+bool all_results(const std::vector<claims::ProofSentence>& sentences, std::string_view result) {
+  for (const claims::ProofSentence& s : sentences)
+    if (s.result != result) return false;
+  return true;
 }
 
 }  // namespace affinterp::proofs

@@ -14,6 +14,8 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace affinterp::proofs {
 
@@ -25,16 +27,25 @@ struct Identity {
   GiNaC::ex lhs, rhs;
 };
 
-/// Where a proof's files go: `dir` on disk (empty: write nothing) and `ref`, how claims.json names that folder
-/// (e.g. "proofs/kaji.er.closed-form").
-struct ProofFiles {
-  std::filesystem::path dir;
-  std::string ref;
+/// Where a proof's files go.
+struct SentenceFiles {
+  std::filesystem::path dir;  ///< written here; empty: nothing is written
+  std::string reference;      ///< how claims.json names `dir`, e.g. "proofs/kaji.er.closed-form"
 };
 
 /// Decides `identity` with both checkers and writes its files into `files.dir` (when set). The sentence's result
 /// is "zero" (the identity holds) or "non-zero" (it fails: lhs − rhs is a nonzero rational function). Throws
 /// std::runtime_error when the checkers disagree, std::invalid_argument on an expression neither can read.
-claims::ProofSentence prove_identity(const Identity& identity, const ProofFiles& files);
+claims::ProofSentence prove_identity(const Identity& identity, const SentenceFiles& files);
+
+/// prove_identity of each, in order.
+std::vector<claims::ProofSentence> prove_identities(const std::vector<Identity>& identities,
+                                                    const SentenceFiles& files);
+
+/// A proof of identities alone, checked by {"ginac", "exact-grid"}.
+claims::Proof identity_proof(std::string scope, std::string method, std::vector<claims::ProofSentence> sentences);
+
+/// Whether every sentence has `result` ("zero" for identities, "empty" for sentences).
+bool all_results(const std::vector<claims::ProofSentence>& sentences, std::string_view result);
 
 }  // namespace affinterp::proofs

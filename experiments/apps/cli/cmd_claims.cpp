@@ -65,6 +65,8 @@ void run(const ClaimsOptions& options) {
     context.figure_dir = staged.staging() / "figures";
     fs::create_directories(context.figure_dir);
   }
+  // The proofs' sentence files and the deciders' outputs, to rerun with the tools alone.
+  context.proof_dir = staged.staging() / "proofs";
   std::vector<ClaimResult> results;
   try {
     results = run_claims(registry, context, options.only, std::cerr);
@@ -107,7 +109,8 @@ void add_claims_command(CLI::App& app) {
   cmd->add_option("--threads", options->threads, "Worker threads for sweeps")
       ->check(CLI::Range(1u, 256u))
       ->capture_default_str();
-  cmd->add_option("--out", options->out, "Folder for claims.json, REPORT.md and figures/")->capture_default_str();
+  cmd->add_option("--out", options->out, "Folder for claims.json, REPORT.md, figures/ and proofs/")
+      ->capture_default_str();
   cmd->add_option("--bench-dir", options->bench_dir,
                   "Folder of Google Benchmark JSON outputs for the speed claims (default: OUT/bench)");
   cmd->add_flag("!--no-figures", options->figures, "Do not draw figures");

@@ -1,6 +1,8 @@
 #include "experiments/claims/claim.hpp"
 #include "experiments/claims/global/exact_global.hpp"
+#include "experiments/claims/global/symbolic_er.hpp"
 #include "experiments/claims/values.hpp"
+#include "experiments/proofs/identity.hpp"
 
 #include <algorithm>
 
@@ -22,10 +24,32 @@ const ClaimDeclaration claim{{
 // Method: E^R(A, ·) is the quadratic form Q = I − (a aᵀ + j jᵀ)/‖A‖² on vec B (a = vec A, j = vec JA); its rank
 //   and Q² = Q (an orthogonal projection, hence only semi-definite) computed exactly on random A, and
 //   E^R(I, I) = 0 as the counterexample.
+//   Proof for all A ≠ 0: E^R(A, A) = 0 (not definite) and ‖A‖⁴ E^R(A, B) is a square (semi-definite), identities
+//   over symbols from theory/global's E^R (proof()).
 // Sizes: quick 100 matrices; full 2000.
 
 using global_exact::Mat2Q;
 using global_exact::Rational;
+
+/// The proof for all A ≠ 0, from theory/global's E^R over symbols:
+///   E^R(A, A) = 0                                    (at-A: B = A ≠ 0 gives 0, so not definite)
+///   ‖A‖⁴ E^R(A, B) = ‖ ‖A‖²B − ⟨A,B⟩A − ⟨JA,B⟩JA ‖²     (semidefinite: a square, so E^R ≥ 0).
+Proof proof(const ClaimContext& ctx) {
+  using symbolic_er::Mat2X;
+  const symbolic_er::Pair p;
+  const GiNaC::ex nA = symbolic_er::norm2(p.A), a = symbolic_er::inner(p.A, p.B), j = symbolic_er::inner_J(p.A, p.B);
+  const Mat2X JA = global::rotation_J<GiNaC::ex>().lazyProduct(p.A);
+  const Mat2X projection_residual = local::scaled(nA, p.B) - local::scaled(a, p.A) - local::scaled(j, JA);
+  const std::vector<proofs::Identity> identities = {
+      {"at-A", "E^R(A, A) = 0 for every A ≠ 0", symbolic_er::E_R(p.A, p.A), GiNaC::ex(0)},
+      {"semidefinite", "‖A‖⁴ E^R(A, B) = ‖ ‖A‖²B − ⟨A,B⟩A − ⟨JA,B⟩JA ‖²", nA * nA * symbolic_er::E_R(p.A, p.B),
+       projection_residual.squaredNorm()},
+  };
+  return proofs::identity_proof("all real 2×2 A ≠ 0 and B",
+                                "identities over symbols from theory/global's E^R: E^R(A, ·) vanishes at B = A ≠ 0 "
+                                "(not definite) and ‖A‖⁴E^R(A, B) is a sum of squares (semi-definite)",
+                                proofs::prove_identities(identities, ctx.proof_files()));
+}
 
 Outcome check(const ClaimContext& ctx) {
   Outcome out;
@@ -68,6 +92,11 @@ Outcome check(const ClaimContext& ctx) {
                         {"B", exact_matrix(B)},
                         {"E_R", exact::to_string(at_A)},
                         {"note", "B ≠ 0 with E^R(A, B) = 0: the quadratic form is not definite"}};
+  out.proof = proof(ctx);
+  if (!proofs::all_results(out.proof->sentences, "zero")) {
+    out.verdict = Verdict::inconclusive;
+    out.summary = "an identity of the proof does not hold: " + out.summary;
+  }
   return out;
 }
 
