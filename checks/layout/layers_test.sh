@@ -13,6 +13,7 @@ declare -A allowed=(
   [plots]="theory plots"
   [experiments/support]="experiments/support"
   [experiments/inputs]="theory experiments/support experiments/inputs"
+  [experiments/proofs]="theory experiments/support experiments/proofs"
   [experiments/claims]="theory reports plots experiments/support experiments/inputs experiments/proofs experiments/claims"
   [experiments/apps]="theory reports plots experiments/support experiments/inputs experiments/proofs experiments/claims experiments/apps"
 )

@@ -92,7 +92,7 @@ TEST(Identity, BothCheckersAcceptARightIdentityAndWriteRerunnableFiles) {
   SymbolicMatrix<2, 2> C;
   C << x, -y, y, x;
   const GiNaC::ex det = C.determinant();
-  const claims::ProofSentence s =
+  const ProofSentence s =
       prove_identity({"det-similarity", "det(xI + yJ) = x² + y²", det, x * x + y * y}, {dir, "proofs/test"});
   EXPECT_EQ(s.result, "zero");
   ASSERT_EQ(s.runs.size(), 2u);
@@ -110,7 +110,7 @@ TEST(Identity, BothCheckersAcceptARightIdentityAndWriteRerunnableFiles) {
 }
 
 TEST(Identity, BothCheckersFindAWrongIdentityNonZero) {
-  const claims::ProofSentence s =
+  const ProofSentence s =
       prove_identity({"wrong", "(x + y)² = x² + y² (wrong)", GiNaC::pow(x + y, 2), x * x + y * y}, {{}, "proofs/t"});
   EXPECT_EQ(s.result, "non-zero");
   EXPECT_EQ(s.runs[0].result, "non-zero");

@@ -62,6 +62,7 @@ nlohmann::json to_json(const ClaimResult& result) {
         {"measurements", e.measurements}}},
       {"counterexample", o.counterexample},
       {"correction", optional_json(o.correction)},
+      {"condition", optional_json(o.condition)},
       {"proof", proof_json(o.proof)},
       {"figures", o.figures},
       {"seconds", result.seconds},

@@ -1,6 +1,6 @@
 #pragma once
 // The settings a check runs under: the run's size, threads and folders, and the claim's own seed.
-#include "experiments/proofs/identity.hpp"
+#include "experiments/proofs/decide_sentence.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -24,7 +24,7 @@ struct RunSettings {
   /// Where Google Benchmark JSON outputs are read from, for measured claims; empty means none.
   std::filesystem::path bench_dir;
   /// Where checks write the sentence files of their proofs, proof_dir/<claim id>/<name>.<ext> beside the
-  /// deciders' outputs; empty means none are kept.
+  /// deciders' outputs; empty means a temporary folder per sentence, kept nowhere.
   std::filesystem::path proof_dir;
 
   /// `quick` under Size::quick, `full` under Size::full.

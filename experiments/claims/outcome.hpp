@@ -1,6 +1,7 @@
 #pragma once
 // What a check returns: the verdict on one claim and the evidence behind it.
 #include "experiments/claims/verdict.hpp"
+#include "experiments/proofs/proof.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -22,30 +23,9 @@ struct Evidence {
   nlohmann::json measurements = nlohmann::json::object();  ///< timings and speeds: vary run to run
 };
 
-/// One first-order sentence (or polynomial identity) of a proof, and what each decider said of it. Files are
-/// relative to the report's folder (proofs/<id>/<name>.<ext>) and are written with the tool's output beside
-/// them (<file>.out), so anyone can rerun a sentence with the tool alone.
-struct ProofSentence {
-  struct Run {
-    std::string tool;    ///< "qepcad", "z3", "ginac", "exact-grid"
-    std::string file;    ///< the input the tool read
-    std::string result;  ///< "empty" / "non-empty" (sentences), "zero" / "non-zero" (identities), "unknown"
-    double seconds = 0;  ///< wall time (a timing: varies run to run)
-  };
-  std::string name;       ///< e.g. "cond-not-prop": ∃ domain ∧ condition ∧ ¬property
-  std::string meaning;    ///< one line: what the sentence says, in words
-  std::string result;     ///< the agreed result; disagreeing deciders make the check fail to run
-  std::vector<Run> runs;  ///< one per decider, two independent ones for a proof
-};
-
-/// A verdict decided for all reals (issue 10): the domain, the method (encoding level and the lemmas that
-/// reduce the sentences) and every sentence with both deciders' results.
-struct Proof {
-  std::string scope;                     ///< the domain, in words
-  std::string method;                    ///< encoding and lemmas
-  std::vector<std::string> checked_by;   ///< the independent deciders, e.g. {"qepcad", "z3"}
-  std::vector<ProofSentence> sentences;  ///< every sentence, in the order the method reads them
-};
+/// A proof for all reals (issue 10) and its sentences: experiments/proofs/proof.hpp.
+using proofs::Proof;
+using proofs::ProofSentence;
 
 struct Outcome {
   Verdict verdict = Verdict::pending;
@@ -57,7 +37,9 @@ struct Outcome {
   /// "p/q" strings, parameters under the paper's own names (x, y, h, alpha, beta, A, v, t).
   nlohmann::json counterexample = nullptr;
   std::optional<std::string> correction;  ///< the corrected statement, for `corrected`
-  std::vector<std::string> figures;       ///< paths relative to the report's folder
+  /// The exact region a goodness-atlas claim states, in the `affinterp decide` grammar (issue 10, item 4).
+  std::optional<std::string> condition;
+  std::vector<std::string> figures;  ///< paths relative to the report's folder
 };
 
 }  // namespace affinterp::claims

@@ -88,7 +88,7 @@ GiNaC::ex column(const std::vector<GiNaC::ex>& list) {
 
 }  // namespace
 
-claims::ProofSentence prove_identity(const Identity& identity, const SentenceFiles& files) {
+ProofSentence prove_identity(const Identity& identity, const SentenceFiles& files) {
   const std::string id = files.reference.substr(files.reference.find_last_of('/') + 1);
   const Script script = write_script(id, identity);
   if (!files.dir.empty()) {
@@ -129,20 +129,52 @@ claims::ProofSentence prove_identity(const Identity& identity, const SentenceFil
           {{"ginac", script_file, result, ginac_seconds}, {"exact-grid", script_file, result, grid_seconds}}};
 }
 
-std::vector<claims::ProofSentence> prove_identities(const std::vector<Identity>& identities,
-                                                    const SentenceFiles& files) {
-  std::vector<claims::ProofSentence> sentences;
+std::vector<ProofSentence> prove_identities(const std::vector<Identity>& identities, const SentenceFiles& files) {
+  std::vector<ProofSentence> sentences;
   for (const Identity& identity : identities) sentences.push_back(prove_identity(identity, files));
   return sentences;
 }
 
-claims::Proof identity_proof(std::string scope, std::string method, std::vector<claims::ProofSentence> sentences) {
+Proof identity_proof(std::string scope, std::string method, std::vector<ProofSentence> sentences) {
   return {std::move(scope), std::move(method), {"ginac", "exact-grid"}, std::move(sentences)};
 }
 
-bool all_results(const std::vector<claims::ProofSentence>& sentences, std::string_view result) {
-  for (const claims::ProofSentence& s : sentences)
-    if (s.result != result) return false;
+Proof combined_proof(std::string scope, std::string method, std::vector<ProofSentence> identities,
+                     std::vector<ProofSentence> sentences) {
+  Proof proof = make_proof(std::move(scope), std::move(method), std::move(sentences));
+  proof.checked_by.insert(proof.checked_by.begin(), {"ginac", "exact-grid"});
+  proof.sentences.insert(proof.sentences.begin(), identities.begin(), identities.end());
+  return proof;
+}
+
+bool decided_twice(const Proof& proof) {
+  if (proof.sentences.empty()) return false;
+  for (const ProofSentence& s : proof.sentences) {
+    if (s.result == "unknown") return false;
+    int agreeing = 0;
+    for (const ProofSentence::Run& r : s.runs) {
+      if (r.result == s.result)
+        ++agreeing;
+      else if (r.result != "unknown")
+        return false;
+    }
+    if (agreeing < 2) return false;
+  }
+  return true;
+}
+
+bool contradicted(const Proof& proof) {
+  for (const ProofSentence& s : proof.sentences)
+    if (s.result == "non-zero" || s.result == "non-empty") return true;
+  return false;
+}
+
+bool proves(const Proof& proof) {
+  if (!decided_twice(proof)) return false;
+  for (const ProofSentence& s : proof.sentences) {
+    const bool identity = !s.runs.empty() && s.runs.front().tool == "ginac";
+    if (s.result != (identity ? "zero" : "empty")) return false;
+  }
   return true;
 }
 

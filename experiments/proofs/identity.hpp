@@ -8,7 +8,8 @@
 // `is(normal((lhs) - (rhs)) == 0);` per entry, which `ginsh <name>.ginsh` answers with 1 (holds) or 0, so anyone
 // can rerun it with GiNaC's own shell; <name>.ginsh.out holds those answers and <name>.grid.out the grid
 // checker's bounds and result.
-#include "experiments/claims/outcome.hpp"
+#include "experiments/proofs/decide_sentence.hpp"
+#include "experiments/proofs/proof.hpp"
 
 #include <ginac/ginac.h>
 
@@ -27,25 +28,30 @@ struct Identity {
   GiNaC::ex lhs, rhs;
 };
 
-/// Where a proof's files go.
-struct SentenceFiles {
-  std::filesystem::path dir;  ///< written here; empty: nothing is written
-  std::string reference;      ///< how claims.json names `dir`, e.g. "proofs/kaji.er.closed-form"
-};
-
 /// Decides `identity` with both checkers and writes its files into `files.dir` (when set). The sentence's result
 /// is "zero" (the identity holds) or "non-zero" (it fails: lhs − rhs is a nonzero rational function). Throws
 /// std::runtime_error when the checkers disagree, std::invalid_argument on an expression neither can read.
-claims::ProofSentence prove_identity(const Identity& identity, const SentenceFiles& files);
+ProofSentence prove_identity(const Identity& identity, const SentenceFiles& files);
 
 /// prove_identity of each, in order.
-std::vector<claims::ProofSentence> prove_identities(const std::vector<Identity>& identities,
-                                                    const SentenceFiles& files);
+std::vector<ProofSentence> prove_identities(const std::vector<Identity>& identities, const SentenceFiles& files);
 
 /// A proof of identities alone, checked by {"ginac", "exact-grid"}.
-claims::Proof identity_proof(std::string scope, std::string method, std::vector<claims::ProofSentence> sentences);
+Proof identity_proof(std::string scope, std::string method, std::vector<ProofSentence> sentences);
 
-/// Whether every sentence has `result` ("zero" for identities, "empty" for sentences).
-bool all_results(const std::vector<claims::ProofSentence>& sentences, std::string_view result);
+/// A proof of identities (checked by GiNaC and the exact grid) and first-order sentences (checked by the deciders
+/// that decided every one, make_proof), identities first.
+Proof combined_proof(std::string scope, std::string method, std::vector<ProofSentence> identities,
+                     std::vector<ProofSentence> sentences);
+
+/// Whether every part of `proof` was decided by two independent checkers: each sentence has an agreed result other
+/// than "unknown", given by at least two of its runs, and no run gave another answer.
+bool decided_twice(const Proof& proof);
+
+/// Whether `proof` proves its claim as stated: decided_twice, every identity "zero" and every sentence "empty".
+bool proves(const Proof& proof);
+
+/// Whether some part of `proof` was decided against the claim: an identity "non-zero" or a sentence "non-empty".
+bool contradicted(const Proof& proof);
 
 }  // namespace affinterp::proofs

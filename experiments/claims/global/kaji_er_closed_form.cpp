@@ -119,7 +119,7 @@ Outcome check(const ClaimContext& ctx) {
       {"other_order_AtB_fails_on", other_order_failures},
       {"other_order_example", other_order_example}};
   out.proof = proof(ctx);
-  if (proofs::all_results(out.proof->sentences, "zero")) {
+  if (proofs::proves(*out.proof)) {
     out.strength = Strength::proved;
     out.summary += "; proved for all A ≠ 0, B by two identities (GiNaC and an exact degree grid)";
   } else {

@@ -73,7 +73,7 @@ Outcome check(const ClaimContext& ctx) {
                            "invariance in the first argument A (the local homotopy); in B, E^R(A, CB) = |det C| E^R(A, "
                            "B) is scaled, not invariant"}};
   out.proof = proof(ctx);
-  if (proofs::all_results(out.proof->sentences, "zero")) {
+  if (proofs::proves(*out.proof)) {
     out.strength = Strength::proved;
     out.summary += "; proved for all A ≠ 0, B, sR_δ ≠ 0 by two identities (GiNaC and an exact degree grid)";
   } else {

@@ -1,5 +1,6 @@
 #include "experiments/claims/origin/section_2_3_proof.hpp"
 
+#include "experiments/proofs/ginac_polynomial.hpp"
 #include "theory/origin/equal_energy_locus.hpp"
 #include "theory/origin/printed_section_2_3.hpp"
 #include "theory/origin/symbols.hpp"
@@ -55,6 +56,29 @@ proofs::Identity hessian_blocks_identity() {
   return {"hessian-blocks",
           "the Hessian of E2(o, o) in (v1x … v4x, v1y … v4y) is diag(H_x, H_x): coordinates separate, blocks equal", H,
           blocks};
+}
+
+proofs::Sentence hessian_sentence() {
+  const GiNaC::matrix H = hessian_by_coordinate();
+  std::vector<logic::Formula> some_minor_not_positive;
+  for (unsigned n = 1; n <= 4; ++n) {
+    GiNaC::matrix leading(n, n);
+    for (unsigned i = 0; i < n; ++i)
+      for (unsigned j = 0; j < n; ++j) leading(i, j) = H(i, j);
+    some_minor_not_positive.push_back(logic::less_equal(proofs::to_polynomial(leading.determinant().expand()), 0));
+  }
+  return {"hessian-not-positive-definite",
+          "some origin where a leading principal minor of H_x is ≤ 0 (E2 not strictly convex in v)",
+          logic::exists({"x", "y"}, logic::disjunction(std::move(some_minor_not_positive))),
+          {}};
+}
+
+proofs::Sentence denominator_sentence() {
+  const logic::Polynomial D = proofs::to_polynomial(GiNaC::denom(origin::printed::min_E2()).expand());
+  return {"denominator-not-positive",
+          "some origin where x² + 2xy + y² − 2x − 2y + 3 ≤ 0",
+          logic::exists({"x", "y"}, logic::less_equal(D, 0)),
+          {}};
 }
 
 }  // namespace affinterp::claims::section_2_3

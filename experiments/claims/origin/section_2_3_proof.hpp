@@ -1,6 +1,7 @@
 #pragma once
 // The parts of the proofs of thesis §2.3's claims that several claims share, built from theory/origin's own
 // energies and the printed formulas: the stationarity of the printed minimiser, and E2(o, o)'s Hessian.
+#include "experiments/proofs/decide_sentence.hpp"
 #include "experiments/proofs/identity.hpp"
 
 #include <ginac/ginac.h>
@@ -20,5 +21,13 @@ GiNaC::matrix hessian_by_coordinate();
 /// The Hessian splits: the x-coordinates' block equals the y-coordinates' block, and the blocks between them
 /// vanish (so the Hessian is positive definite iff the x block is).
 proofs::Identity hessian_blocks_identity();
+
+/// ∃ x, y: some leading principal minor of H_x (Sylvester's criterion) is ≤ 0. Empty: E2(o, o) is strictly
+/// convex in v for every origin.
+proofs::Sentence hessian_sentence();
+
+/// ∃ x, y: x² + 2xy + y² − 2x − 2y + 3 ≤ 0, the printed denominator. Empty: the printed formulas are defined
+/// everywhere.
+proofs::Sentence denominator_sentence();
 
 }  // namespace affinterp::claims::section_2_3

@@ -43,16 +43,17 @@ GiNaC::ex printed_energy(Reading reading) {
 }
 
 /// The proof for every origin o = (x, y) ∈ ℝ²: ∂E2/∂u = 0 at the printed minimiser for each unknown u (rational
-/// identities), and E2's Hessian is diag(H_x, H_x) (an identity); E2 being quadratic in v with a positive definite
-/// Hessian, its stationary point is its unique minimiser.
+/// identities), E2's Hessian is diag(H_x, H_x) (an identity) and H_x is positive definite (a sentence); E2 being
+/// quadratic in v with a positive definite Hessian, its stationary point is its unique minimiser.
 Proof proof(const ClaimContext& ctx) {
   std::vector<proofs::Identity> identities = section_2_3::stationarity_identities();
   identities.push_back(section_2_3::hessian_blocks_identity());
-  return proofs::identity_proof(
+  return proofs::combined_proof(
       "every origin o = (x, y) in the real plane",
       "identities in x, y from theory/origin's E2(o, o) (Def. 2.3.2): the printed v is stationary and the Hessian "
-      "splits as diag(H_x, H_x)",
-      proofs::prove_identities(identities, ctx.proof_files()));
+      "splits as diag(H_x, H_x); a sentence: H_x is positive definite at every origin (Sylvester's criterion)",
+      proofs::prove_identities(identities, ctx.proof_files()),
+      {proofs::prove_sentence(section_2_3::hessian_sentence(), ctx.proof_files(), {.seconds = 60})});
 }
 
 Outcome check(const ClaimContext& ctx) {
@@ -110,6 +111,7 @@ Outcome check(const ClaimContext& ctx) {
       {"coordinate mismatches at random origins", random_mismatches},
   };
   out.proof = proof(ctx);
+  const bool proved = proofs::proves(*out.proof);
   if (first_wrong.empty() && random_mismatches == 0) {
     out.verdict = Verdict::confirmed;
     out.summary =
@@ -117,6 +119,14 @@ Outcome check(const ClaimContext& ctx) {
         "(x, y) (v2 = (" +
         computed["v2x"].get<std::string>() + ", " + computed["v2y"].get<std::string>() + "), v3 = (" +
         computed["v3x"].get<std::string>() + ", " + computed["v3y"].get<std::string>() + ") whatever the origin)";
+    if (proved) {
+      out.strength = Strength::proved;
+      out.summary += "; proved for every origin (identities and sentences, each by two independent checkers)";
+    }
+    if (proofs::contradicted(*out.proof)) {
+      out.verdict = Verdict::inconclusive;
+      out.summary = "a part of the proof fails although the exact comparison agreed: " + out.summary;
+    }
   } else {
     out.verdict = Verdict::refuted;
     out.summary = "the printed " + (first_wrong.empty() ? std::string("minimiser") : first_wrong) +

@@ -1,0 +1,92 @@
+#include "experiments/proofs/subprocess.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdlib>
+#include <stdexcept>
+
+namespace affinterp::proofs {
+
+namespace {
+
+/// Exit status a child uses when exec fails (the shell's convention for "command not found").
+constexpr int exec_failed = 127;
+
+[[noreturn]] void exec_child(const std::vector<std::string>& argv, const std::filesystem::path& input,
+                             const ProcessLimits& limits, int output_fd) {
+  setpgid(0, 0);  // its own process group, so that a timeout kills every process the decider starts
+  const rlim_t cap = limits.address_space_bytes;
+  const rlimit as{cap, cap};
+  setrlimit(RLIMIT_AS, &as);
+  [[maybe_unused]] const int niceness = nice(10);  // deciders yield to the suite's own threads
+  const int in = open(input.empty() ? "/dev/null" : input.c_str(), O_RDONLY);
+  if (in < 0) _exit(exec_failed + 1);
+  dup2(in, STDIN_FILENO);
+  dup2(output_fd, STDOUT_FILENO);
+  dup2(output_fd, STDERR_FILENO);
+  // QEPCAD B finds its help files through $qe.
+  setenv("qe", "/usr/lib/qepcad", /*overwrite=*/0);
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  execvp(args[0], args.data());
+  _exit(exec_failed);
+}
+
+}  // namespace
+
+ProcessResult run_process(const std::vector<std::string>& argv, const std::filesystem::path& input,
+                          const ProcessLimits& limits) {
+  if (argv.empty()) throw std::invalid_argument("run_process(): no program");
+  int fds[2];
+  if (pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error("run_process(): pipe failed");
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("run_process(): fork failed");
+  if (pid == 0) {
+    close(fds[0]);
+    exec_child(argv, input, limits, fds[1]);
+  }
+  close(fds[1]);
+  setpgid(pid, pid);  // also from the parent, so that killpg works even before the child ran
+
+  ProcessResult result;
+  const auto deadline = start + std::chrono::duration<double>(limits.wall_seconds);
+  char buffer[65536];
+  for (;;) {
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) {
+      result.timed_out = true;
+      break;
+    }
+    pollfd p{fds[0], POLLIN, 0};
+    const int ready = poll(&p, 1, static_cast<int>(std::min<long long>(left.count(), 1000)));
+    if (ready < 0 && errno != EINTR) break;
+    if (ready <= 0) continue;
+    const ssize_t n = read(fds[0], buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;  // end of output: the child closed it (exited)
+    result.output.append(buffer, static_cast<std::size_t>(n));
+  }
+  if (result.timed_out) killpg(pid, SIGKILL);
+  close(fds[0]);
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  // A grandchild that kept the group alive after the decider exited is ended too.
+  killpg(pid, SIGKILL);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  result.not_found = !result.timed_out && WIFEXITED(status) && WEXITSTATUS(status) == exec_failed;
+  return result;
+}
+
+}  // namespace affinterp::proofs

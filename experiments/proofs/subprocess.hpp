@@ -1,0 +1,28 @@
+#pragma once
+// Runs a decider as a child process under limits, so that no sentence can hang the suite or take the
+// machine's memory: a wall-clock limit (the whole process group is killed), an address-space cap
+// (RLIMIT_AS), and a lowered priority.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace affinterp::proofs {
+
+struct ProcessLimits {
+  double wall_seconds = 60;
+  std::size_t address_space_bytes = std::size_t{1536} << 20;  ///< 1.5 GB
+};
+
+struct ProcessResult {
+  std::string output;      ///< standard output and standard error, interleaved
+  int exit_status = 0;     ///< the exit status, or 128 + signal number
+  bool timed_out = false;  ///< killed at the wall limit
+  bool not_found = false;  ///< the program could not be started
+  double seconds = 0;      ///< wall time
+};
+
+/// Runs `argv` (argv[0] looked up in PATH) with standard input from `input` (or /dev/null when empty).
+ProcessResult run_process(const std::vector<std::string>& argv, const std::filesystem::path& input,
+                          const ProcessLimits& limits);
+
+}  // namespace affinterp::proofs

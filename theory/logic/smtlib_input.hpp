@@ -1,0 +1,18 @@
+#pragma once
+// SMT-LIB 2 input for Z3's nonlinear real arithmetic: a sentence whose leading existential block becomes
+// declared constants; with nothing else quantified the logic is QF_NRA (complete in Z3's nlsat), otherwise
+// NRA with the remaining quantifiers written out.
+#include "theory/logic/formula.hpp"
+
+#include <string>
+
+namespace affinterp::logic {
+
+/// p as an SMT-LIB term over Real: (+ (* 2 x y y) (- 3)), rationals as (/ p q).
+std::string smtlib_term(const Polynomial& p);
+
+/// The SMT-LIB 2 script deciding the sentence `f`: "; title", set-logic, declarations, assert,
+/// (check-sat) and (get-model) (Z3 prints the model of a satisfiable sentence: a witness).
+std::string to_smtlib(const Formula& f, const std::string& title);
+
+}  // namespace affinterp::logic
