@@ -9,6 +9,10 @@
 // Comput. 8 (1999), Lemma 2.1; induction on the variables, a nonzero univariate polynomial of degree ≤ d having
 // at most d roots). So N vanishing on the grid proves lhs = rhs wherever both sides are defined, provided
 // neither denominator is the zero polynomial, which the grid shows too.
+// What it shares with GiNaC is the tree: GiNaC's constructors flatten sums and products, collect numeric
+// coefficients of equal terms and combine equal factors (x·x⁻¹ = 1), but never expand a product or a power of a
+// sum and never cancel a common factor that is not literally equal. The two sides are read separately, so nothing
+// cancels between them before the grid evaluates N.
 #include <ginac/ginac.h>
 
 #include <cstdint>
