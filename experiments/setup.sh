@@ -12,7 +12,7 @@ packages=(
   libcairo2-dev libgif-dev chromium
   nlohmann-json3-dev libcli11-dev
   libcgal-dev libcgal-demo libxsimd-dev
-  libginac-dev
+  libginac-dev ginac-tools
   libflint-arb-dev
   qepcad z3 libz3-dev
   clang libclang-rt-14-dev clang-format

@@ -1,5 +1,8 @@
 #include "experiments/claims/claim.hpp"
 #include "experiments/claims/origin/ginac_values.hpp"
+#include "experiments/claims/origin/section_2_3_proof.hpp"
+#include "experiments/proofs/ginac_polynomial.hpp"
+#include "experiments/proofs/identity.hpp"
 #include "plots/origin/fig_2_6.hpp"
 #include "theory/origin/energy.hpp"
 #include "theory/origin/equal_energy_locus.hpp"
@@ -7,6 +10,8 @@
 #include "theory/origin/symbols.hpp"
 
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -31,6 +36,8 @@ const ClaimDeclaration claim{{
 // Method: exact symbolic minimisation over ℚ(x, y) (GiNaC); the locus is the numerator of min E1 − min E2(o, o),
 //   whose denominator is shown positive on the plane, compared with the printed conic up to a constant factor;
 //   small rational points on either curve witness a difference. Draws thesis Fig 2.6.
+//   Proof (proof()): (min E1 − min E2(o, o))·D = λ·P for the computed locus polynomial P, D the printed
+//   denominator (positive on the plane), a rational identity decided by two checkers.
 // Sizes: symbolic; the same at either size.
 
 nlohmann::json points_json(const std::vector<std::pair<GiNaC::numeric, GiNaC::numeric>>& points) {
@@ -46,6 +53,52 @@ std::optional<std::pair<GiNaC::numeric, GiNaC::numeric>> first_off(
   for (const auto& point : points)
     if (!other.subs(GiNaC::lst{s.x == point.first, s.y == point.second}).is_zero()) return point;
   return std::nullopt;
+}
+
+/// The proof that the locus is {P = 0}: (min E1 − min E2(o, o))·D = λ·P as rational functions, with min E2(o, o) =
+/// E2 at its computed minimiser (thesis.sec-2.3.min-energy proves that the minimum), D = x² + 2xy + y² −
+/// 2x − 2y + 3 the printed denominator (positive on the plane: D = (x + y − 1)² + 2) and λ a nonzero number read
+/// off at the first small point where P ≠ 0.
+Proof proof(const ClaimContext& ctx, const GiNaC::ex& P) {
+  const origin::Symbols& s = origin::symbols();
+  // min E2(o, o) as E2 at theory/origin's minimiser, not normalised: the identity checks the whole computation.
+  const origin::OriginStudy& study = origin::thesis_study();
+  const GiNaC::ex difference = study.min_E1.value - study.E2_common.subs(study.min_E2_common.minimiser);
+  const GiNaC::ex D = GiNaC::denom(origin::printed::min_E2());
+  GiNaC::ex lambda = 0;
+  for (const auto& [x, y] : std::vector<std::pair<int, int>>{{1, 0}, {0, 1}, {1, 1}, {2, 0}, {0, 2}, {2, 1}})
+    if (const GiNaC::lst at{s.x == x, s.y == y}; lambda.is_zero() && !P.subs(at).is_zero())
+      lambda = (difference * D).subs(at) / P.subs(at);
+  const std::vector<proofs::Identity> identities = {
+      {"denominator", "x² + 2xy + y² − 2x − 2y + 3 = (x + y − 1)² + 2 (> 0)", D, GiNaC::pow(s.x + s.y - 1, 2) + 2},
+      {"locus", "(min E1 − min E2(o, o))·(x² + 2xy + y² − 2x − 2y + 3) = λ·P, P the computed locus polynomial",
+       difference * D, lambda * P}};
+  // Sentences in x, y: L = (min E1 − min E2(o, o))·D, a polynomial, against the printed conic Q and the
+  // corrected P.
+  const logic::Polynomial L = proofs::to_polynomial((difference * D).normal()),
+                          Q = proofs::to_polynomial(origin::printed::conic().expand()), C = proofs::to_polynomial(P);
+  const auto on_off = [](const logic::Polynomial& on, const logic::Polynomial& off) {
+    return logic::exists({"x", "y"}, logic::equal(on, 0) && logic::not_equal(off, 0));
+  };
+  const std::vector<proofs::Sentence> sentences = {
+      {"printed.on-locus-off-conic", "an origin with min E1 = min E2(o, o) off the printed conic", on_off(L, Q), {}},
+      {"printed.on-conic-off-locus", "an origin on the printed conic with min E1 ≠ min E2(o, o)", on_off(Q, L), {}},
+      {"corrected.on-locus-off-conic",
+       "an origin with min E1 = min E2(o, o) off the corrected conic",
+       on_off(L, C),
+       {}},
+      {"corrected.on-conic-off-locus", "an origin on the corrected conic with min E1 ≠ min E2(o, o)", on_off(C, L), {}},
+      section_2_3::denominator_sentence(),
+  };
+  std::vector<ProofSentence> decided;
+  for (const proofs::Sentence& sentence : sentences)
+    decided.push_back(proofs::prove_sentence(sentence, ctx.proof_files(), {.seconds = 60}));
+  return proofs::combined_proof(
+      "every origin o = (x, y) in the real plane",
+      "a rational identity in x, y from theory/origin's exact minima: the locus min E1 = min E2(o, o) is P = 0 "
+      "since D = (x + y − 1)² + 2 > 0; sentences: the printed conic and the locus differ both ways, the corrected "
+      "conic and the locus coincide, D > 0",
+      proofs::prove_identities(identities, ctx.proof_files()), std::move(decided));
 }
 
 Outcome check(const ClaimContext& ctx) {
@@ -97,6 +150,18 @@ Outcome check(const ClaimContext& ctx) {
       {"rational points on the printed conic", points_json(on_Q)},
   };
 
+  out.proof = proof(ctx, P);
+  // The proof's parts in order: denominator, locus (identities), then the printed pair, the corrected pair and the
+  // denominator sentence. Where both deciders answered, they must say what the symbolic comparison says.
+  const auto& parts = out.proof->sentences;
+  const auto decided_as = [&](std::size_t i, bool empty) {
+    return parts[i].result == "unknown" || parts[i].result == (empty ? "empty" : "non-empty");
+  };
+  const bool consistent = parts[0].result == "zero" && parts[1].result == "zero" &&
+                          (printed_holds ? decided_as(2, true) && decided_as(3, true)
+                                         : !(parts[2].result == "empty" && parts[3].result == "empty")) &&
+                          decided_as(4, true) && decided_as(5, true) && decided_as(6, denominator_positive);
+  if (!consistent) throw std::runtime_error("the proof disagrees with the symbolic comparison of the locus");
   const bool is_conic = origin::total_degree(P) == 2 && denominator_positive;
   if (printed_holds) {
     out.verdict = Verdict::confirmed;

@@ -2,10 +2,15 @@
 #include "experiments/claims/sym3/exact_spectrum.hpp"
 #include "experiments/claims/sym3/sd_sweep.hpp"
 #include "experiments/claims/values.hpp"
+#include "experiments/proofs/identity.hpp"
 #include "theory/sym3/spectral_decomposition.hpp"
 
+#include <algorithm>
+#include <array>
 #include <optional>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace affinterp::claims::sym3 {
 namespace {
@@ -26,10 +31,38 @@ const ClaimDeclaration claim{{
 //   that sign, the printed x = s + t + u does not, so x = s − t − u is tested as the correction.
 // Method: both readings at 100 digits on the same rational S = Q diag(λ) Qᵀ (sd_sweep.hpp); the counterexample is the
 //   smallest integer spectrum with Q = E (by max |λ|, then Σ|λ|) where the printed x fails.
+//   Proof for all distinct real eigenvalues (proof()): xλ² + yλ + z = e^λ at λ1, λ2, λ3 with the corrected x (rational
+//   identities, e^{λi} independent variables), and not with the printed x.
 // Sizes: quick 20 matrices; full 200.
 
 using affinterp::sym3::SdReading;
 using exact::Real100;
+
+/// The proof for all distinct real λ1, λ2, λ3: with theory/sym3's case-3 coefficients over symbols, xλi² + yλi + z =
+/// e^{λi} for i = 1, 2, 3 (rational identities in λ and the values e^{λi}, which the grid reads as independent
+/// variables) with the corrected x, and not with the printed one. With S = Q diag(λ) Qᵀ (spectral theorem) the
+/// interpolation gives xS² + yS + zE = Q diag(e^λ) Qᵀ = exp S.
+Proof proof(const ClaimContext& ctx) {
+  const std::array<GiNaC::symbol, 3> l{GiNaC::symbol("l1"), GiNaC::symbol("l2"), GiNaC::symbol("l3")};
+  std::vector<proofs::Identity> identities;
+  for (const SdReading reading : {SdReading::corrected, SdReading::printed}) {
+    const std::string name = reading == SdReading::corrected ? "corrected" : "printed";
+    const auto c = affinterp::sym3::sd_case3<GiNaC::ex>(l[0], l[1], l[2], reading);
+    for (int i = 0; i < 3; ++i) {
+      const std::string at = "l" + std::to_string(i + 1);
+      identities.push_back({name + ".interpolates-at-" + at,
+                            "x " + at + "² + y " + at + " + z = exp(" + at +
+                                ") with x = " + (reading == SdReading::corrected ? "s − t − u" : "s + t + u (printed)"),
+                            c.x * l[i] * l[i] + c.y * l[i] + c.z, GiNaC::exp(l[i])});
+    }
+  }
+  return proofs::identity_proof(
+      "all distinct real eigenvalues λ1, λ2, λ3",
+      "rational identities in λ1, λ2, λ3 and e^λ1, e^λ2, e^λ3 (independent variables on the grid) from theory/sym3's "
+      "case 3 over symbols: the corrected x interpolates exp at the eigenvalues, the printed x does not; exp S = "
+      "xS² + yS + zE follows by the spectral theorem",
+      proofs::prove_identities(identities, ctx.proof_files()));
+}
 
 Outcome check(const ClaimContext& ctx) {
   auto distinct = [](Rng& r) {
@@ -61,6 +94,14 @@ Outcome check(const ClaimContext& ctx) {
   }
 
   Outcome out;
+  out.proof = proof(ctx);
+  const auto& sentences = out.proof->sentences;
+  const bool corrected_proved =
+      std::all_of(sentences.begin(), sentences.begin() + 3, [](const auto& s) { return s.result == "zero"; });
+  const bool printed_fails =
+      std::all_of(sentences.begin() + 3, sentences.end(), [](const auto& s) { return s.result == "non-zero"; });
+  if (corrected_proved != (corrected.failures == 0) || printed_fails != (printed.failures > 0))
+    throw std::runtime_error("the proof of case 3 disagrees with the 100-digit sweep");
   out.evidence.method =
       "100-digit evaluation of xS² + yS + zE, x as printed (s + t + u) and corrected (s − t − u), "
       "on rational S = Q diag(λ) Qᵀ (distinct exact λ, exact Cayley Q) against Q diag(e^λ) Qᵀ";

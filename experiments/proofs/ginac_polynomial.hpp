@@ -1,0 +1,15 @@
+#pragma once
+// GiNaC polynomials as theory/logic's polynomials: the atoms of the sentences that QEPCAD B and Z3 decide are built
+// from the suite's own symbolic algebra (theory/origin, or theory/global and theory/sym3 over GiNaC::ex).
+#include "theory/logic/polynomial.hpp"
+
+#include <ginac/ginac.h>
+
+namespace affinterp::proofs {
+
+/// `e` as a polynomial with rational coefficients in its symbols (by name), expanded by theory/logic's own
+/// arithmetic. Throws std::invalid_argument when `e` is not one (a negative or non-integer power, a function, a
+/// non-rational number).
+logic::Polynomial to_polynomial(const GiNaC::ex& e);
+
+}  // namespace affinterp::proofs
