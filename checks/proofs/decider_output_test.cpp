@@ -74,6 +74,17 @@ TEST(ParseQepcad, FailuresAreUnknownWithTheReason) {
   EXPECT_EQ(formula.result, SetResult::unknown);
 }
 
+TEST(ParseQepcad, AnAnswerOverAnInvalidProjectionIsUnknown) {
+  // As QEPCAD B printed it for a sentence that is not well-oriented (research run, atlas.polar.norm level D).
+  const std::string out =
+      "WARNING! A projection factor is everywhere zero in the cylinder \n"
+      "over the cell (1609,168,6,4) of positive dimension.  The McCallum projection \n"
+      "may not be valid.\n\nAn equivalent quantifier-free formula:\n\nFALSE\n\n";
+  const DeciderAnswer a = parse_qepcad(out, {"x", "y", "h"});
+  EXPECT_EQ(a.result, SetResult::unknown);
+  EXPECT_NE(a.reason.find("McCallum projection may not be valid"), std::string::npos) << a.reason;
+}
+
 TEST(ParseZ3, ModelValues) {
   const std::string out = R"(sat
 (

@@ -205,6 +205,14 @@ DeciderAnswer parse_qepcad(const std::string& output, const std::vector<std::str
     answer.reason = "qepcad: no answer";
     return answer;
   }
+  // QEPCAD B's McCallum projection is complete only for well-oriented input; where it is not, QEPCAD warns
+  // and still prints a formula, which may then be wrong (Collins and Hong, J. Symb. Comput. 12, 1991; Brown,
+  // QEPCAD B user manual). Such an answer decides nothing.
+  for (const std::string& line : lines)
+    if (line.find("McCallum projection") != std::string::npos) {
+      answer.reason = "qepcad: the McCallum projection may not be valid here (input not well-oriented)";
+      return answer;
+    }
   std::string formula;
   for (++i; i < lines.size() && trim(lines[i]).empty(); ++i) {
   }
