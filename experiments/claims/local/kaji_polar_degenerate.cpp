@@ -144,7 +144,7 @@ Outcome check(const ClaimContext& ctx) {
     };
     if (const auto point = counterexample(proof, "printed.never-negative", never_negative_at, {{{"l1", 2}, {"l2", 2}}}))
       outcome.counterexample["from_proof"] = {
-          {"point", exact_point(*point)},
+          {"point", exact_point({{"l1", point->at("l1")}, {"l2", point->at("l2")}})},
           {"never_negative (exact sign analysis)", true},
           {"found_by",
            "a point of the non-empty printed.never-negative (the deciders' sample point, or a simple candidate when "

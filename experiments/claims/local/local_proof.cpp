@@ -86,9 +86,12 @@ ProofRun run_proof(const ClaimContext& ctx, const ProofPlan& plan) {
     if (!difference.is_zero()) throw std::logic_error("identity " + name + " fails: " + to_string(difference));
     run.identities[name] = "zero polynomial (exact arithmetic)";
   }
+  // The quick size runs only sentences that decide in seconds; the full size adds literal levels (QEPCAD up to
+  // ~45 s on an idle machine, research RESULTS.md), given room on a loaded one.
+  const proofs::DeciderLimits limits{.seconds = ctx.size == Size::full ? 180.0 : 60.0};
   std::vector<ProofSentence> sentences;
   for (const proofs::Sentence& s : plan.sentences) {
-    proofs::SentenceDecision decision = proofs::decide_sentence(s, ctx.proof_files(), {});
+    proofs::SentenceDecision decision = proofs::decide_sentence(s, ctx.proof_files(), limits);
     sentences.push_back(proofs::to_proof_sentence(s, decision));
     run.decisions.emplace(s.name, std::move(decision));
   }

@@ -57,7 +57,8 @@ struct ProofRun {
 };
 
 /// Checks the identities (throws std::logic_error naming one that fails), decides every sentence with both
-/// deciders (files in ctx.proof_files(); throws when the deciders disagree) and assembles the proof.
+/// deciders (files in ctx.proof_files(); 60 s per decider at the quick size, 180 s at the full; throws when the
+/// deciders disagree) and assembles the proof.
 ProofRun run_proof(const ClaimContext& ctx, const ProofPlan& plan);
 
 /// A point of the named non-empty sentence's set: the deciders' sample point (or, when they printed none, the
