@@ -47,9 +47,10 @@ RC_GTEST_PROP(LocalFormulas, BlendPolynomialsAreTheSuitesOwn, ()) {
   p["v1"] = v1;
   p["v2"] = v2;
   RC_ASSERT(det_of_blend(generic_B, "t").evaluate(p) == affinterp::local::blend_determinant(B)(t));
-  const Mat2<Rational> A_t = (1 - t) * affinterp::local::identity2<Rational>() + t * B;
-  const affinterp::local::Vec2<Rational> w = A_t * affinterp::local::Vec2<Rational>(v1, v2);
-  RC_ASSERT(norm_squared_of_blend(generic_B, var("v1"), var("v2"), "t").evaluate(p) == w.squaredNorm());
+  const Mat2<Rational> A_t = affinterp::local::scaled(Rational(1 - t), affinterp::local::identity2<Rational>()) +
+                             affinterp::local::scaled(t, B);
+  const affinterp::local::Vec2<Rational> w = A_t.lazyProduct(affinterp::local::Vec2<Rational>(v1, v2));
+  RC_ASSERT(norm_squared_of_blend(generic_B, var("v1"), var("v2"), "t").evaluate(p) == w(0) * w(0) + w(1) * w(1));
 }
 
 RC_GTEST_PROP(LocalFormulas, AreaLevelEIsDefinition221, ()) {
@@ -65,6 +66,11 @@ RC_GTEST_PROP(LocalFormulas, ConditionsAreTheThesisConditions, ()) {
   RC_ASSERT(logic::holds(corrected_area_formula(X, Y), p) == affinterp::local::corrected_area_condition(x, y));
   RC_ASSERT(logic::holds(thm_2_2_3_formula(X, Y), p) == affinterp::local::thm_2_2_3_condition(x, y));
   RC_ASSERT(logic::holds(thm_2_2_5_formula(X, Y, H), p) == affinterp::local::thm_2_2_5_condition(x, y, h));
+}
+
+std::string text(const Mat2<Rational>& B) {
+  return "[[" + exact::to_string(B(0, 0)) + ", " + exact::to_string(B(0, 1)) + "], [" + exact::to_string(B(1, 0)) +
+         ", " + exact::to_string(B(1, 1)) + "]]";
 }
 
 /// Whether the closed sentence `f` is true, by both deciders (they must agree and decide).
@@ -92,12 +98,12 @@ TEST(LocalFormulas, QuantifiedLevelsAgreeWithTheExactDecidersAtRationalPoints) {
     for (const std::string level : {"D", "L"})
       EXPECT_EQ(decided_true("area-" + level, at(area_property(generic_B, level), B)),
                 affinterp::local::good_for_area(B))
-          << "level " << level << " at " << B;
+          << "level " << level << " at " << text(B);
   for (const auto& B : norm_points)
     for (const std::string level : {"D", "E", "N"})
       EXPECT_EQ(decided_true("norm-" + level, at(norm_property(generic_B, level), B)),
                 affinterp::local::good_for_norm(B))
-          << "level " << level << " at " << B;
+          << "level " << level << " at " << text(B);
   // Lemma L9's level G against the exact SVD decider (Lemmas L9 + L12).
   for (const auto& [x, y, beta] :
        std::vector<std::tuple<Rational, Rational, Rational>>{{2, 1, 1}, {2, 3, Rational(1, 4)}, {2, Rational(1, 2), 0}})
