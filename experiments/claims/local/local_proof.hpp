@@ -57,7 +57,7 @@ struct ProofRun {
 };
 
 /// Checks the identities (throws std::logic_error naming one that fails), decides every sentence with both
-/// deciders (files in ctx.proof_files(); 60 s per decider at the quick size, 180 s at the full; throws when the
+/// deciders (files in ctx.proof_files(); 60 s per decider at the quick size, 300 s at the full; throws when the
 /// deciders disagree) and assembles the proof.
 ProofRun run_proof(const ClaimContext& ctx, const ProofPlan& plan);
 
