@@ -40,4 +40,26 @@ inline std::vector<std::string> draw_region_map(const std::filesystem::path& ste
       .render();
 }
 
+/// A region alone: where a condition holds (`condition`; `property` is not drawn), for a condition proved
+/// exact elsewhere (the goodness atlas). Same cells and files as draw_region_map.
+inline std::vector<std::string> draw_region(const std::filesystem::path& stem, const std::string& title,
+                                            const std::string& x_label, const std::string& y_label,
+                                            const std::string& inside_label, const std::vector<RegionPoint>& points,
+                                            double dx, double dy) {
+  Table table;
+  for (const RegionPoint& p : points) table.push_back({p.x, p.y, p.condition ? 1.0 : 0.0});
+  const std::string cell = "(" + std::to_string(dx) + "):(" + std::to_string(dy) + ")";
+  const auto layer = [&](int category, const std::string& colour, const std::string& label) {
+    return "$map using 1:($3 == " + std::to_string(category) + " ? $2 : 1/0):" + cell +
+           " with boxxyerror fs solid 1.0 noborder lc rgb '" + colour + "' title '" + label + "'";
+  };
+  return Figure(stem)
+      .size(1100, 720)
+      .data("map", table)
+      .script("set title '" + title + "'\nset xlabel '" + x_label + "'\nset ylabel '" + y_label +
+              "'\nset key outside right center vertical box opaque\nset grid front\nplot " +
+              layer(1, "#b8dcb0", inside_label) + ", \\\n  " + layer(0, "#e6e6e6", "outside") + "\n")
+      .render();
+}
+
 }  // namespace affinterp::plots

@@ -26,7 +26,7 @@ one_line_error() {
 expect 0 "--help" -- "$affinterp" --help
 expect 0 "claims --help" -- "$affinterp" claims --help
 expect 0 "report --help" -- "$affinterp" report --help
-for command in shapes interpolate view exp3 eig3; do
+for command in shapes interpolate view exp3 eig3 decide; do
   expect 0 "$command --help" -- "$affinterp" "$command" --help
 done
 expect 2 "view without a run" -- "$affinterp" view -o "$work/compare.html"
@@ -40,6 +40,16 @@ one_line_error "bad size"
 expect 2 "unknown claim" -- "$affinterp" claims --only no.such.claim --out "$work/r"
 one_line_error "unknown claim"
 [ ! -e "$work/r/claims.json" ] || { echo "FAIL: a failed run wrote claims.json"; failures=$((failures + 1)); }
+
+# decide: a bad expression is a one-line error with exit status 2, before any decider runs.
+for condition in "x + y >= 2" "tr >= 2 and" "a^(1/2) > 0" "a^0.5 > 0" "(a > 0" "a $ 1" "tr/0 > 1" ""; do
+  expect 2 "decide --condition '$condition'" -- "$affinterp" decide --homotopy linear --notion area --condition "$condition"
+  one_line_error "decide --condition '$condition'"
+done
+expect 2 "decide: beta is no variable of the svd area" -- "$affinterp" decide --homotopy svd --notion area --condition "beta = 0"
+one_line_error "decide: beta is no variable of the svd area"
+expect 2 "decide: unknown homotopy" -- "$affinterp" decide --homotopy affine --notion area --condition "true"
+one_line_error "decide: unknown homotopy"
 
 expect 0 "claims --list" -- "$affinterp" claims --list
 # A line per declared claim: ID, "implemented", where printed, statement (pinned_verdicts_test checks that

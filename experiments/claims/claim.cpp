@@ -14,6 +14,8 @@ std::string_view to_string(Chapter chapter) {
       return "origin";
     case Chapter::sym3:
       return "sym3";
+    case Chapter::atlas:
+      return "atlas";
   }
   return "?";
 }
@@ -27,6 +29,8 @@ std::string_view report_section(Chapter chapter) {
       return "Global interpolation (Kaji §4 and Appendix; thesis §2.3)";
     case Chapter::sym3:
       return "Exponential of 3×3 symmetric matrices (thesis ch. 3)";
+    case Chapter::atlas:
+      return "The goodness atlas (beyond the papers: where each homotopy is good, proved for all reals)";
   }
   return "?";
 }

@@ -17,7 +17,7 @@
 namespace affinterp::claims {
 
 /// The folders experiments/claims/<chapter>/, in the report's order.
-enum class Chapter { local, global, origin, sym3 };
+enum class Chapter { local, global, origin, sym3, atlas };
 
 /// The chapter's folder name.
 std::string_view to_string(Chapter chapter);

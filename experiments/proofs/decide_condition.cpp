@@ -82,7 +82,8 @@ ConditionVerdict decide_condition(const AtlasCell& cell, const Formula& conditio
       return answer;
     }
     all_empty = all_empty && d.result == SetResult::empty;
-    if (d.result == SetResult::unknown) answer.reason += (answer.reason.empty() ? "" : "; ") + d.reasons();
+    if (!d.reasons().empty())  // unknown, or decided by one decider only
+      answer.reason += (answer.reason.empty() ? "" : "; ") + std::string(side.name) + ": " + d.reasons();
     if (d.result != SetResult::non_empty) continue;
 
     answer.verdict = ConditionVerdict::Verdict::not_equivalent;

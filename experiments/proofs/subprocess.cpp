@@ -11,6 +11,8 @@
 #include <chrono>
 #include <cstdlib>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace affinterp::proofs {
 
@@ -19,25 +21,41 @@ namespace {
 /// Exit status a child uses when exec fails (the shell's convention for "command not found").
 constexpr int exec_failed = 127;
 
-[[noreturn]] void exec_child(const std::vector<std::string>& argv, const std::filesystem::path& input,
-                             const ProcessLimits& limits, int output_fd) {
+/// The child's side: limits, standard streams, exec. Only async-signal-safe calls: the parent may have
+/// other threads (both deciders start at once), so nothing here allocates.
+[[noreturn]] void exec_child(char* const* argv, char* const* envp, const char* input, const ProcessLimits& limits,
+                             int output_fd) {
   setpgid(0, 0);  // its own process group, so that a timeout kills every process the decider starts
   const rlim_t cap = limits.address_space_bytes;
   const rlimit as{cap, cap};
   setrlimit(RLIMIT_AS, &as);
   [[maybe_unused]] const int niceness = nice(10);  // deciders yield to the suite's own threads
-  const int in = open(input.empty() ? "/dev/null" : input.c_str(), O_RDONLY);
+  const int in = open(input, O_RDONLY);
   if (in < 0) _exit(exec_failed + 1);
   dup2(in, STDIN_FILENO);
   dup2(output_fd, STDOUT_FILENO);
   dup2(output_fd, STDERR_FILENO);
-  // QEPCAD B finds its help files through $qe.
-  setenv("qe", "/usr/lib/qepcad", /*overwrite=*/0);
-  std::vector<char*> args;
-  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-  args.push_back(nullptr);
-  execvp(args[0], args.data());
+  execvpe(argv[0], argv, envp);
   _exit(exec_failed);
+}
+
+/// The environment of this process, with QEPCAD B's $qe (where it finds its help files) set if missing.
+std::vector<std::string> child_environment() {
+  std::vector<std::string> env;
+  bool has_qe = false;
+  for (char** e = environ; *e != nullptr; ++e) {
+    env.emplace_back(*e);
+    has_qe = has_qe || env.back().rfind("qe=", 0) == 0;
+  }
+  if (!has_qe) env.emplace_back("qe=/usr/lib/qepcad");
+  return env;
+}
+
+std::vector<char*> pointers(std::vector<std::string>& strings) {
+  std::vector<char*> p;
+  for (std::string& s : strings) p.push_back(s.data());
+  p.push_back(nullptr);
+  return p;
 }
 
 }  // namespace
@@ -45,6 +63,9 @@ constexpr int exec_failed = 127;
 ProcessResult run_process(const std::vector<std::string>& argv, const std::filesystem::path& input,
                           const ProcessLimits& limits) {
   if (argv.empty()) throw std::invalid_argument("run_process(): no program");
+  std::vector<std::string> args = argv, env = child_environment();
+  const std::vector<char*> arg_pointers = pointers(args), env_pointers = pointers(env);
+  const std::string input_path = input.empty() ? std::string("/dev/null") : input.string();
   int fds[2];
   if (pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error("run_process(): pipe failed");
   const auto start = std::chrono::steady_clock::now();
@@ -52,7 +73,7 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::files
   if (pid < 0) throw std::runtime_error("run_process(): fork failed");
   if (pid == 0) {
     close(fds[0]);
-    exec_child(argv, input, limits, fds[1]);
+    exec_child(arg_pointers.data(), env_pointers.data(), input_path.c_str(), limits, fds[1]);
   }
   close(fds[1]);
   setpgid(pid, pid);  // also from the parent, so that killpg works even before the child ran

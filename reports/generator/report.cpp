@@ -111,6 +111,8 @@ void write_claim_section(std::ostringstream& md, const json& c) {
   if (!c["counterexample"].is_null())
     md << "**Counterexample** (exact values as \"p/q\"):\n\n```json\n" << c["counterexample"].dump(2) << "\n```\n\n";
   if (!c["correction"].is_null()) md << "**Correction.** " << c["correction"].get<std::string>() << "\n\n";
+  if (c.contains("condition") && c["condition"].is_string())
+    md << "**Condition** (in the `affinterp decide` grammar): `" << c["condition"].get<std::string>() << "`\n\n";
   if (c.contains("proof") && c["proof"].is_object()) write_proof(md, c["proof"]);
   for (const auto& f : c["figures"]) {
     const std::string path = f.get<std::string>();

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   add_shapes_command(app);
   add_interpolate_command(app);
   add_view_command(app);
+  add_decide_command(app);
 
   try {
     app.parse(argc, argv);

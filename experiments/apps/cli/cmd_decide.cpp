@@ -1,0 +1,127 @@
+// `affinterp decide`: is a condition exactly where a homotopy is good for area or norm? Decided for all
+// reals by QEPCAD B and Z3 (issue 10, item 5; experiments/proofs/decide_condition.hpp).
+#include "experiments/apps/cli/command.hpp"
+#include "experiments/proofs/decide_condition.hpp"
+#include "theory/logic/condition_parser.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+namespace affinterp::cli {
+
+namespace {
+
+using namespace affinterp::proofs;
+
+struct DecideOptions {
+  std::string homotopy, notion, condition;
+  bool json = false;
+  double timeout = 25;
+};
+
+constexpr const char* footer = R"(Variables (with tr and det of the matrix named, everywhere):
+  linear    a, b, c, d      A = [[a, b], [c, d]], det A > 0; A(t) = (1-t)I + tA
+  polar     x, y, h         S = [[x, h], [h, y]] positive definite, the symmetric factor of A = R S;
+  exp-log   x, y, h           the rotation R plays no part in either notion
+  svd       x, y (, beta)   D = diag(x, y), x, y > 0, A = R_alpha D R_beta; for the norm also beta, the right
+                            rotation's angle in radians (any real; A(t) = R_(t alpha)((1-t)I + tD)R_(t beta))
+Grammar:
+  numbers 3, 0.25, .5, 1/3; + - * /; ^ with integer exponents (x^2, x^-1); parentheses;
+  comparisons < <= > >= = != (== too; chains 0 < x <= 1); and or not (also && || !); true false.
+  A comparison whose sides divide by a polynomial D is false where D = 0 (N/D op 0 is D != 0 and N*D op 0).
+Output: "equivalent", or "not equivalent" with a counterexample in small exact rationals (re-verified by exact
+evaluation, and by the suite's own exact decider for linear, polar and svd-area cells) and which side fails,
+or "unknown" with the reason. Each decider gets at most --timeout seconds per side.
+Exit status: 0 with a verdict (unknown included), 2 on a bad expression or usage.)";
+
+void print_text(const AtlasCell& cell, const ConditionVerdict& v) {
+  using V = ConditionVerdict::Verdict;
+  std::cout << (v.verdict == V::equivalent       ? "equivalent"
+                : v.verdict == V::not_equivalent ? "not equivalent"
+                                                 : "unknown")
+            << "\n";
+  if (v.counterexample) {
+    const Counterexample& c = *v.counterexample;
+    std::cout << "  counterexample:";
+    for (const std::string& name : cell.variables)
+      std::cout << " " << name << " = " << exact::to_string(c.point.at(name));
+    std::cout << "\n  the condition is " << (c.condition ? "true" : "false") << " there, but the " << cell.id()
+              << " homotopy is " << (c.property ? "good" : "not good") << " ("
+              << (c.condition ? "condition-true-property-false" : "condition-false-property-true") << ")\n";
+    std::cout << "  re-verified by exact evaluation"
+              << (c.checked_by_suite ? " and by the suite's exact decider (theory/local/goodness.hpp)" : "") << "\n";
+  }
+  if (!v.reason.empty()) std::cout << "  " << (v.verdict == V::unknown ? "reason: " : "note: ") << v.reason << "\n";
+  for (const SentenceDecision& side : v.sides) {
+    std::cout << "  " << side.name << ":";
+    for (const DeciderRun& r : side.runs)
+      std::cout << " " << r.tool << " " << to_string(r.answer.result) << " (" << std::fixed << std::setprecision(1)
+                << r.seconds << " s)";
+    std::cout << "\n";
+  }
+}
+
+void print_json(const AtlasCell& cell, const ConditionVerdict& v, double seconds) {
+  nlohmann::json out = {{"verdict", to_string(v.verdict)}, {"counterexample", nullptr}, {"seconds", seconds}};
+  if (v.counterexample) {
+    nlohmann::json c = nlohmann::json::object();
+    for (const std::string& name : cell.variables) c[name] = exact::to_string(v.counterexample->point.at(name));
+    c["condition"] = v.counterexample->condition;
+    c["property"] = v.counterexample->property;
+    out["counterexample"] = c;
+  }
+  if (v.verdict == ConditionVerdict::Verdict::unknown) out["reason"] = v.reason;
+  std::cout << out.dump() << "\n";
+}
+
+void run(const DecideOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const Homotopy homotopy = options.homotopy == "linear"  ? Homotopy::linear
+                            : options.homotopy == "svd"   ? Homotopy::svd
+                            : options.homotopy == "polar" ? Homotopy::polar
+                                                          : Homotopy::exp_log;
+  const AtlasCell& cell = atlas_cell(homotopy, options.notion == "area" ? Notion::area : Notion::norm);
+  logic::Formula condition;
+  try {
+    condition = logic::parse_condition(options.condition, cell.variables, cell.macros);
+  } catch (const std::invalid_argument& e) {
+    throw CommandFailed(std::string("bad condition: ") + e.what(), usage_error);
+  }
+  const ConditionVerdict v = decide_condition(cell, condition, {.seconds = options.timeout});
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (options.json)
+    print_json(cell, v, std::round(seconds * 100) / 100);
+  else
+    print_text(cell, v);
+}
+
+}  // namespace
+
+void add_decide_command(CLI::App& app) {
+  auto options = std::make_shared<DecideOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "decide",
+      "Decide for all reals whether a condition is exactly where a homotopy is good for area (Def 2.2.1) or norm "
+      "(Def 2.2.2), with QEPCAD B and Z3 (both must be installed; answers within about a minute).");
+  cmd->add_option("--homotopy", options->homotopy, "linear, svd, polar or exp-log")
+      ->required()
+      ->check(CLI::IsMember({"linear", "svd", "polar", "exp-log"}));
+  cmd->add_option("--notion", options->notion, "area or norm")->required()->check(CLI::IsMember({"area", "norm"}));
+  cmd->add_option("--condition", options->condition, "The condition, in the grammar below")->required();
+  cmd->add_flag("--json", options->json,
+                "Print one JSON object {\"verdict\", \"counterexample\": {variables as \"p/q\" (\"p\" when q = 1), "
+                "\"condition\", "
+                "\"property\"} or null, \"seconds\"} (and \"reason\" when unknown)");
+  cmd->add_option("--timeout", options->timeout, "Seconds each decider may take per side")
+      ->check(CLI::Range(1.0, 600.0))
+      ->capture_default_str();
+  cmd->footer(footer);
+  cmd->callback([options] { run(*options); });
+}
+
+}  // namespace affinterp::cli

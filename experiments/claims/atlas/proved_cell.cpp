@@ -1,0 +1,200 @@
+#include "experiments/claims/atlas/proved_cell.hpp"
+
+#include "experiments/support/random.hpp"
+#include "plots/region_map.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace affinterp::claims::atlas {
+
+namespace {
+
+using logic::Formula;
+using logic::Point;
+using proofs::SetResult;
+
+std::string point_text(const Point& p) {
+  std::string text;
+  for (const auto& [name, value] : p) text += (text.empty() ? "" : ", ") + name + " = " + exact::to_string(value);
+  return text;
+}
+
+nlohmann::json point_json(const Point& p) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [name, value] : p) j[name] = exact::to_string(value);
+  return j;
+}
+
+/// Second line of evidence: the condition against the suite's own exact decider at random rational points of
+/// the domain (coordinates p/q, |p| ≤ 32, 1 ≤ q ≤ 8).
+struct SampleComparison {
+  std::uint64_t points = 0, disagreements = 0;
+  std::optional<Point> first_disagreement;
+};
+
+SampleComparison compare_with_suite(const proofs::AtlasCell& cell, std::uint64_t seed, std::uint64_t wanted) {
+  SampleComparison c;
+  const Formula condition = cell.condition_formula();
+  Rng rng(seed);
+  for (std::uint64_t draws = 0; c.points < wanted && draws < 20 * wanted; ++draws) {
+    Point p;
+    for (const std::string& v : cell.variables) p[v] = Rational(rng.integer(-32, 32)) / Rational(rng.integer(1, 8));
+    if (!logic::holds(cell.domain, p)) continue;
+    const std::optional<bool> good = proofs::suite_says_good(cell, p);
+    if (!good) return c;  // no exact decider in the suite for this cell
+    ++c.points;
+    if (logic::holds(condition, p) != *good && c.disagreements++ == 0) c.first_disagreement = p;
+  }
+  return c;
+}
+
+std::vector<std::string> draw_slices(const ClaimContext& ctx, const proofs::AtlasCell& cell,
+                                     const std::vector<Slice>& slices) {
+  std::vector<std::string> refs;
+  const Formula condition = cell.condition_formula();
+  const int n = ctx.pick(32, 96);
+  for (std::size_t k = 0; k < slices.size(); ++k) {
+    const Slice& s = slices[k];
+    std::vector<plots::RegionPoint> points;
+    bool compared = false;
+    const Rational lo = exact::from_double(s.lo), step = (exact::from_double(s.hi) - lo) / n;
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= n; ++j) {
+        Point p = s.fixed;
+        p[s.x] = lo + step * i;
+        p[s.y] = lo + step * j;
+        if (!logic::holds(cell.domain, p)) continue;
+        const bool inside = logic::holds(condition, p);
+        const std::optional<bool> good = proofs::suite_says_good(cell, p);
+        compared = good.has_value();
+        points.push_back({static_cast<double>(p[s.x]), static_cast<double>(p[s.y]), inside, good.value_or(inside)});
+      }
+    std::string name = "atlas-" + cell.id();
+    std::replace(name.begin(), name.end(), '.', '-');
+    if (slices.size() > 1) name += "-" + std::to_string(k + 1);
+    const std::string title = "atlas " + cell.id() + ", slice " + s.label;
+    const double half = static_cast<double>(step) / 2;
+    if (compared)
+      plots::draw_region_map(ctx.figure_stem(name), title + ": condition vs the exact decider of goodness.hpp", s.x,
+                             s.y, points, half, half);
+    else
+      plots::draw_region(ctx.figure_stem(name), title + ": where the condition holds", s.x, s.y,
+                         "good (the condition holds)", points, half, half);
+    refs.push_back(RunSettings::figure_ref(name + ".png"));
+    refs.push_back(RunSettings::figure_ref(name + ".svg"));
+  }
+  return refs;
+}
+
+}  // namespace
+
+proofs::Sentence atlas_sentence(const proofs::AtlasCell& cell, const std::string& name, const std::string& meaning,
+                                const Formula& set, const std::vector<std::string>& extra) {
+  std::vector<std::string> variables = cell.variables;
+  variables.insert(variables.end(), extra.begin(), extra.end());
+  return {name, meaning, logic::exists(variables, cell.domain && set), {}};
+}
+
+proofs::Sentence cond_not_prop(const proofs::AtlasCell& cell, const std::string& level, const Formula& property,
+                               const std::vector<std::string>& extra) {
+  return atlas_sentence(cell, "cond-not-prop." + level,
+                        "a point of the domain where the condition holds and the property (level " + level + ") fails",
+                        cell.condition_formula() && !property, extra);
+}
+
+proofs::Sentence prop_not_cond(const proofs::AtlasCell& cell, const std::string& level, const Formula& property,
+                               const std::vector<std::string>& extra) {
+  return atlas_sentence(cell, "prop-not-cond." + level,
+                        "a point of the domain where the property (level " + level + ") holds and the condition fails",
+                        !cell.condition_formula() && property, extra);
+}
+
+Outcome atlas_outcome(const ClaimContext& ctx, const proofs::AtlasCell& cell, const AtlasProof& proof,
+                      const std::vector<Slice>& slices) {
+  Outcome outcome;
+  outcome.condition = cell.condition;
+
+  std::vector<ProofSentence> records;
+  bool all_empty = true, both_decided = true;
+  std::optional<std::pair<std::string, proofs::Witness>> non_empty;
+  for (const proofs::Sentence& sentence : proof.sentences) {
+    const bool z3_alone = std::find(proof.z3_only.begin(), proof.z3_only.end(), sentence.name) != proof.z3_only.end();
+    // Where QEPCAD is known not to finish (it exhausts its prime list), it gets 10 s, enough for Z3.
+    const proofs::DeciderLimits limits{.seconds = z3_alone ? 10.0 : 60.0};
+    const proofs::SentenceDecision d = proofs::decide_sentence(sentence, ctx.proof_files(), limits);
+    records.push_back(proofs::to_proof_sentence(sentence, d));  // throws when the deciders disagree
+    if (d.result == SetResult::non_empty && !non_empty && d.witness) non_empty.emplace(sentence.name, *d.witness);
+    all_empty = all_empty && d.result == SetResult::empty;
+    const bool qepcad_empty = d.runs[0].answer.result == SetResult::empty;
+    const bool z3_empty = d.runs[1].answer.result == SetResult::empty;
+    both_decided = both_decided && z3_empty && (qepcad_empty || z3_alone);
+  }
+  std::vector<std::string> failed_identities;
+  for (const auto& [name, difference] : proof.identities)
+    if (!difference.is_zero()) failed_identities.push_back(name);
+
+  outcome.proof = proofs::make_proof(proof.scope, proof.method, records);
+  if (!proof.z3_only.empty() && both_decided) outcome.proof->checked_by = {"qepcad", "z3"};
+
+  const SampleComparison sample = compare_with_suite(cell, ctx.seed, ctx.pick(200, 2000));
+  outcome.evidence.method =
+      "first-order sentences decided for all reals by QEPCAD B and Z3 (the proof); second line: the condition "
+      "against the suite's exact decider (theory/local/goodness.hpp) at random rational points";
+  outcome.evidence.sample_size = sample.points;
+  outcome.evidence.seed = ctx.seed;
+  outcome.evidence.details["condition_in_words"] = cell.condition_words;
+  outcome.evidence.details["identities"] = proof.identities.size();
+  outcome.evidence.details["random_points"] =
+      sample.points == 0 ? nlohmann::json("no exact decider in the suite for this cell")
+                         : nlohmann::json{{"points", sample.points}, {"disagreements", sample.disagreements}};
+  if (ctx.draws_figures()) outcome.figures = draw_slices(ctx, cell, slices);
+
+  if (sample.first_disagreement) {
+    if (all_empty)
+      throw std::runtime_error("the proof says the condition of atlas." + cell.id() +
+                               " is exact, but the suite's decider disagrees at " +
+                               point_text(*sample.first_disagreement));
+    outcome.verdict = Verdict::refuted;
+    outcome.strength = Strength::exact_counterexample;
+    outcome.summary =
+        "the condition and the suite's exact decider disagree at " + point_text(*sample.first_disagreement);
+    outcome.counterexample = point_json(*sample.first_disagreement);
+    return outcome;
+  }
+  if (non_empty) {
+    outcome.verdict = Verdict::refuted;
+    outcome.strength = Strength::exact_counterexample;
+    outcome.summary = "the sentence " + non_empty->first + " is non-empty: the condition is not exact";
+    outcome.counterexample = point_json(non_empty->second.point);
+    outcome.counterexample["exact"] = non_empty->second.exact;
+    return outcome;
+  }
+  if (all_empty && both_decided && failed_identities.empty()) {
+    outcome.verdict = Verdict::confirmed;
+    outcome.strength = Strength::proved;
+    outcome.summary =
+        "proved for all reals: good for " + std::string(proofs::to_string(cell.notion)) + " exactly when " +
+        cell.condition_words + " (" + std::to_string(records.size()) + " sentences empty by QEPCAD B and Z3" +
+        (sample.points
+             ? "; the suite's exact decider agrees at " + std::to_string(sample.points) + " random rational points"
+             : "") +
+        ")";
+    return outcome;
+  }
+  outcome.verdict = Verdict::inconclusive;
+  outcome.strength = Strength::sample;
+  std::string why;
+  for (const ProofSentence& s : records)
+    if (s.result != "empty" ||
+        std::any_of(s.runs.begin(), s.runs.end(), [](const auto& r) { return r.result == "unknown"; }))
+      why += (why.empty() ? "" : ", ") + s.name;
+  for (const std::string& name : failed_identities) why += (why.empty() ? "identity " : ", identity ") + name;
+  outcome.summary =
+      "not proved: undecided " + why +
+      (sample.points ? "; the suite's exact decider agrees at " + std::to_string(sample.points) + " random points"
+                     : "");
+  return outcome;
+}
+
+}  // namespace affinterp::claims::atlas
