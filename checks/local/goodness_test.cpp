@@ -4,7 +4,6 @@
 #include "checks/local/generators.hpp"
 #include "theory/exact/rational.hpp"
 #include "theory/local/quadratic_field.hpp"
-#include "theory/local/svd_norm_sampling.hpp"
 #include "theory/local/thesis_conditions.hpp"
 
 #include <cmath>
@@ -178,23 +177,6 @@ TEST(QuadraticSurd, RunsTheDecidersOfTheThesisExample) {
   EXPECT_FALSE(good_for_norm(A));
   EXPECT_EQ(det2(A), QSqrt3(2));
   (void)r;
-}
-
-TEST(SvdNormSampling, FindsTheQuarterTurnFailure) {
-  // D = diag(2, 1), β = π/2: ‖A_s(t)e1‖² = 1, 13/8, 1 at t = 0, ½, 1.
-  EXPECT_NEAR(svd_norm_squared(2, 1, std::numbers::pi / 2, 0, 0.5), 13.0 / 8, 1e-15);
-  const auto witness = svd_norm_failure(2, 1, std::numbers::pi / 2, {});
-  ASSERT_TRUE(witness.has_value());
-  const auto f = [&](double t) { return svd_norm_squared(2, 1, std::numbers::pi / 2, witness->phi, t); };
-  EXPECT_GT((f(witness->t_b) - f(witness->t_a)) * (f(witness->t_b) - f(witness->t_c)), 0);
-}
-
-RC_GTEST_PROP(SvdNormSampling, WithoutRightRotationAgreesWithTheExactDecider, ()) {
-  const int i = *rc::gen::inRange(1, 41), j = *rc::gen::inRange(1, 41);
-  const Rational x = Rational(i) / 10, y = Rational(j) / 10;
-  Mat2<Rational> D;
-  D << x, 0, 0, y;
-  RC_ASSERT(good_for_norm(D) == !svd_norm_failure(static_cast<double>(x), static_cast<double>(y), 0.0, {}).has_value());
 }
 
 }  // namespace

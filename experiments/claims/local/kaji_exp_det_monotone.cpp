@@ -1,4 +1,5 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/local/local_proof.hpp"
 #include "experiments/claims/local/random_gl_plus.hpp"
 #include "theory/local/local.hpp"
 
@@ -25,7 +26,11 @@ const ClaimDeclaration claim{{
 // Method: in Real50 on a t grid over [−10, 10]: for det A = 1 (every fourth sample) det A^E(t) must stay 1; otherwise
 //   consecutive values must move in the sign of log det A, and the central difference (h = 1e-15) must match
 //   d/dt (λ1λ2)^t = log(λ1λ2)(λ1λ2)^t.
-// Sizes: quick 50 matrices × 21 times; full 300 × 61.
+//   Proof (issue 10): Lemma L10 (analytic): det A^E(t) = c^t with c = det S > 0, whose derivative is L c^t with
+//   L = log c, where L has the sign of c − 1 and c^t > 0; the algebraic residue, two sentences in c, L, E = c^t
+//   (and E2, c^t at another time) decided by QEPCAD B and Z3: L·E = 0 exactly when c = 1, and L·E never takes
+//   both signs.
+// Sizes: quick 50 matrices × 21 times; full 300 × 61; the same sentences at both sizes.
 
 using affinterp::local::det2;
 using affinterp::local::ExpLogHomotopy;
@@ -36,6 +41,27 @@ Mat2<Real50> random_unimodular(Rng& rng, double max_ratio) {
   return Svd<Real50>{Real50(rng.uniform(-std::numbers::pi, std::numbers::pi)), x, 1 / x,
                      Real50(rng.uniform(-std::numbers::pi, std::numbers::pi))}
       .matrix();
+}
+
+/// The proof's algebraic residue after Lemma L10.
+ProofPlan proof_plan() {
+  const Polynomial c = var("c"), L = var("L"), E = var("E"), E2 = var("E2");
+  const auto iff = [](const Formula& a, const Formula& b) { return (a && b) || (!a && !b); };
+  const Formula log_sign = iff(logic::greater(L, 0), logic::greater(c, 1)) &&
+                           iff(logic::equal(L, 0), logic::equal(c, 1)) && iff(logic::less(L, 0), logic::less(c, 1));
+  return {"c = det A = lambda1 lambda2 > 0 real, every real t",
+          "Lemma L10 (analytic): det A^E(t) = c^t, d/dt c^t = L c^t with L = log c; log is increasing with log 1 = "
+          "0, so L has the sign of c - 1, and E = c^t > 0. Both residue sentences empty = the derivative is "
+          "identically 0 iff c = 1 and otherwise never 0 and of one sign (strictly monotone)",
+          {sentence("derivative-zero-iff-det1-fails",
+                    "c > 0, L = log c (by sign), E = c^t > 0 with L E = 0 not iff c = 1", {"c", "L", "E"},
+                    logic::greater(c, 0) && logic::greater(E, 0) && log_sign &&
+                        !iff(logic::equal(L * E, 0), logic::equal(c, 1))),
+           sentence("derivative-sign-changes",
+                    "c > 0 and two times (E = c^t, E2 = c^s > 0) where L c^t takes both signs", {"c", "L", "E", "E2"},
+                    logic::greater(c, 0) && logic::greater(E, 0) && logic::greater(E2, 0) && log_sign &&
+                        logic::less(L * E, 0) && logic::greater(L * E2, 0))},
+          {}};
 }
 
 Outcome check(const ClaimContext& ctx) {
@@ -82,6 +108,7 @@ Outcome check(const ClaimContext& ctx) {
       holds ? "det A^E(t) is constant 1 when lambda1 lambda2 = 1 and otherwise strictly monotone with derivative "
               "log(lambda1 lambda2)(lambda1 lambda2)^t != 0 at every sampled t (Real50)"
             : "det A^E(t) is not monotone as stated";
+  attach_proof(outcome, run_proof(ctx, proof_plan()));
   return outcome;
 }
 

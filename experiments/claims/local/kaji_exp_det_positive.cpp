@@ -1,4 +1,5 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/local/local_proof.hpp"
 #include "experiments/claims/local/random_gl_plus.hpp"
 #include "plots/local/figures.hpp"
 #include "theory/local/local.hpp"
@@ -24,10 +25,29 @@ const ClaimDeclaration claim{{
 // Method: det A^E(t) = det R_{tθ} det S^t = λ1^t λ2^t = (det A)^t > 0 (Kaji §3). In Real50, det A^E(t) from the
 //   matrix entries (ad − bc) is compared with (det A)^t on a t grid for random A; |t| ≤ 10 and x/y ≤ 10 keep the
 //   cancellation in ad − bc below 10^10 of the 50 digits. Draws Kaji Fig. 1.
-// Sizes: quick 50 matrices × 21 times; full 400 × 101.
+//   Proof (issue 10): Lemma L10 (analytic): S = Q diag(λ1, λ2) Qᵀ ≻ 0 and S^t = Q diag(λ1^t, λ2^t) Qᵀ, so
+//   det A^E(t) = det R_{tθ} λ1^t λ2^t = (det S)^t for every real t, positive when λ1, λ2 > 0; the algebraic
+//   residue, one sentence decided by QEPCAD B and Z3: a positive definite S has no eigenvalue ≤ 0.
+// Sizes: quick 50 matrices × 21 times; full 400 × 101; the same sentence at both sizes.
 
 using affinterp::local::det2;
 using affinterp::local::ExpLogHomotopy;
+
+/// The proof's algebraic residue after Lemma L10.
+ProofPlan proof_plan() {
+  const Polynomial x = var("x"), y = var("y"), h = var("h"), l1 = var("l1"), l2 = var("l2");
+  const Polynomial det_S = x * y - h * h;
+  return {
+      "S = [[x, h], [h, y]] real positive definite (A = R_theta S in GL+(2)), every real t",
+      "Lemma L10 (analytic): det A^E(t) = det R_{t theta} det S^t = 1 * l1^t l2^t for the eigenvalues l1, l2 of S "
+      "(the pair with l1 + l2 = tr S, l1 l2 = det S), and a real power of a positive real is positive; the "
+      "residue sentence empty = both eigenvalues are positive",
+      {sentence("eigenvalue-not-positive", "a positive definite S with an eigenvalue <= 0", {"x", "y", "h", "l1", "l2"},
+                logic::greater(x, 0) && logic::greater(y, 0) && logic::greater(det_S, 0) &&
+                    logic::equal(l1 + l2, x + y) && logic::equal(l1 * l2, det_S) &&
+                    (logic::less_equal(l1, 0) || logic::less_equal(l2, 0)))},
+      {}};
+}
 
 Outcome check(const ClaimContext& ctx) {
   Rng rng(ctx.seed);
@@ -61,6 +81,7 @@ Outcome check(const ClaimContext& ctx) {
   outcome.verdict = holds ? Verdict::confirmed : Verdict::refuted;
   outcome.summary = holds ? "det A^E(t) = (det A)^t > 0 at every sampled t in [-10, 10] (Real50)"
                           : "det A^E(t) is not positive somewhere";
+  attach_proof(outcome, run_proof(ctx, proof_plan()));
   if (ctx.draws_figures()) outcome.figures = ctx.figure_refs(plots::draw_kaji_figure_1(ctx.figure_dir));
   return outcome;
 }

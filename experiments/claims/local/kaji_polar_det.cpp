@@ -1,4 +1,5 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/local/local_proof.hpp"
 #include "experiments/claims/local/simple_values.hpp"
 #include "experiments/support/random.hpp"
 #include "theory/local/goodness.hpp"
@@ -26,7 +27,10 @@ const ClaimDeclaration claim{{
 // Method: det R_{tθ} = 1, so det A^P(t) = det((1−t)I + tS). S = R_uᵀ diag(λ1, λ2) R_u with a rational rotation
 //   R_u and A = R_{u+1} S are exact; both sides have degree ≤ 2 in t, so agreeing at five times is an identity.
 //   det(R_{tθ} M) = det M is checked apart, in Real50, on random angles and matrices.
-// Sizes: quick λ step 1/2, 200 rotation samples; full λ step 1/8, 5000.
+//   Proof (issue 10): two sentences in the entries x, y, h of S ≻ 0, decided by QEPCAD B and Z3: S has two
+//   positive eigenvalues λ1, λ2 (λ1 + λ2 = tr S, λ1λ2 = det S), and det((1−t)I + tS) differs from the printed
+//   product for no such λ1, λ2 and real t; identities det R = c² + s², (RS)ᵀ(RS) = (c² + s²)S² (Lemma L5).
+// Sizes: quick λ step 1/2, 200 rotation samples; full λ step 1/8, 5000; the same sentences at both sizes.
 
 using affinterp::local::blend_determinant;
 using affinterp::local::det2;
@@ -52,6 +56,34 @@ double rotation_det_deviation(std::uint64_t seed, int samples) {
     worst = std::max(worst, Real50(abs(det2(Mat2<Real50>(affinterp::local::rotation(angle) * M)) - det) / abs(det)));
   }
   return static_cast<double>(worst);
+}
+
+/// The proof: the factorisation for every positive definite S and real t.
+ProofPlan proof_plan() {
+  const Polynomial x = var("x"), y = var("y"), h = var("h"), l1 = var("l1"), l2 = var("l2"), t = var("t");
+  const Polynomial c = var("c"), s = var("s"), one(1);
+  const PolyMat2 S{{{x, h}, {h, y}}}, R = rotation(c, s), RS = product(R, S), SS = product(S, S);
+  const PolyMat2 RS_t_RS = product(transpose(RS), RS);
+  const Formula spd = logic::greater(x, 0) && logic::greater(y, 0) && logic::greater(det(S), 0);
+  const Formula eigenvalues = logic::equal(l1 + l2, trace(S)) && logic::equal(l1 * l2, det(S));
+  ProofPlan plan{
+      "S = [[x, h], [h, y]] real positive definite (A = R_theta S in GL+(2)), t real",
+      "det A^P(t) = det R_{t theta} det((1-t)I + tS) with det R = c^2 + s^2 = 1 (Lemma L5, identity); the singular "
+      "values of A = RS are the eigenvalues of S as (RS)^T(RS) = (c^2 + s^2) S^2 (identities); eigenvalues as "
+      "the pair with l1 + l2 = tr S, l1 l2 = det S. Both sentences empty = the factorisation holds for all reals",
+      {sentence("eigenvalues-exist-positive", "a positive definite S without two positive eigenvalues", {"x", "y", "h"},
+                spd && !logic::exists({"l1", "l2"}, logic::greater(l1, 0) && logic::greater(l2, 0) && eigenvalues)),
+       sentence("factorisation-fails",
+                "S positive definite, eigenvalues l1, l2 and a real t where det((1-t)I + tS) != ((l1-1)t+1)((l2-1)t+1)",
+                {"x", "y", "h", "l1", "l2", "t"},
+                spd && eigenvalues &&
+                    logic::not_equal(det_of_blend(S, "t"), ((l1 - one) * t + one) * ((l2 - one) * t + one)))},
+      {{"det R_theta = c^2 + s^2", det(R) - (c * c + s * s)}}};
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j)
+      plan.identities.push_back({"(RS)^T(RS) = (c^2 + s^2) S^2, entry " + std::to_string(i + 1) + std::to_string(j + 1),
+                                 RS_t_RS[i][j] - (c * c + s * s) * SS[i][j]});
+  return plan;
 }
 
 Outcome check(const ClaimContext& ctx) {
@@ -89,6 +121,7 @@ Outcome check(const ClaimContext& ctx) {
   outcome.summary = holds ? "det((1-t)I + tS) = ((lambda1-1)t+1)((lambda2-1)t+1) as polynomials on all " +
                                 std::to_string(cases) + " exact cases, and det R_{t theta} = 1 (Real50)"
                           : "the printed det A^P(t) differs from the computed one";
+  attach_proof(outcome, run_proof(ctx, proof_plan()));
   return outcome;
 }
 

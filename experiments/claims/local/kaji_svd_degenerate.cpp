@@ -1,4 +1,5 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/local/local_proof.hpp"
 #include "experiments/claims/local/quadratic_signs.hpp"
 #include "experiments/claims/local/simple_values.hpp"
 #include "experiments/support/random.hpp"
@@ -25,12 +26,28 @@ const ClaimDeclaration claim{{
 //   have), t real, and A is not a rotation: for a rotation every homotopy here keeps det = 1.
 // Method: det A_s(t) = det((1−t)I + tD) for all α, β: exact root analysis of that quadratic on an (x, y) grid,
 //   then A_s evaluated in Real50 at the root t0 = 1/(1 − x) with random α, β must be singular.
-// Sizes: quick step 1/4; full step 1/32.
+//   Proof (issue 10): one sentence in x, y, decided by QEPCAD B and Z3: no D = diag(x, y) ≠ I, x, y > 0, keeps
+//   det((1−t)I + tD) ≠ 0 for every real t (det R = c² + s² = 1, Lemma L5, identity).
+// Sizes: quick step 1/4; full step 1/32; the same sentence at both sizes.
 
 using affinterp::local::blend_determinant;
 using affinterp::local::det2;
 using affinterp::local::Quadratic;
 using exact::Real50;
+
+/// The proof: every non-identity D = diag(x, y) ≻ 0 makes det A_s(t) vanish at some real t.
+ProofPlan proof_plan() {
+  const Polynomial x = var("x"), y = var("y"), c = var("c"), s = var("s");
+  const PolyMat2 D{{{x, Polynomial(0)}, {Polynomial(0), y}}};
+  return {
+      "D = diag(x, y), x, y > 0 real, not both 1 (A not a rotation); every alpha, beta; t real",
+      "det A_s(t) = det R_{t alpha} det((1-t)I + tD) det R_{t beta} with det R = c^2 + s^2 = 1 (Lemma L5, "
+      "identity); the sentence empty = a real root exists for every such D",
+      {sentence("never-zero", "x, y > 0 not both 1 with det((1-t)I + tD) != 0 for every real t", {"x", "y"},
+                logic::greater(x, 0) && logic::greater(y, 0) && (logic::not_equal(x, 1) || logic::not_equal(y, 1)) &&
+                    logic::forall({"t"}, logic::not_equal(det_of_blend(D, "t"), 0)))},
+      {{"det R = c^2 + s^2", det(rotation(c, s)) - (c * c + s * s)}}};
+}
 
 Outcome check(const ClaimContext& ctx) {
   const Rational step = ctx.pick(Rational(1) / 4, Rational(1) / 32);
@@ -70,6 +87,7 @@ Outcome check(const ClaimContext& ctx) {
   outcome.summary = holds ? "det A_s(t) = ((x-1)t+1)((y-1)t+1) vanishes at a real t on all " + std::to_string(cases) +
                                 " non-rotation cases; A_s(t0) evaluated in Real50 has |det| <= 1e-40"
                           : "some SVD homotopy never degenerates, or A_s(t0) is not singular";
+  attach_proof(outcome, run_proof(ctx, proof_plan()));
   return outcome;
 }
 

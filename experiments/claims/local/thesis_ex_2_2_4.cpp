@@ -1,11 +1,10 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/local/local_proof.hpp"
 #include "plots/local/figures.hpp"
 #include "theory/local/affine_map.hpp"
 #include "theory/local/goodness.hpp"
 #include "theory/local/quadratic_field.hpp"
-#include "theory/local/svd_norm_sampling.hpp"
-
-#include <numbers>
+#include "theory/local/svd_norm_goodness.hpp"
 
 namespace affinterp::claims::local {
 namespace {
@@ -26,8 +25,11 @@ const ClaimDeclaration claim{{
 //   outside Kaji's (−π, π]); the matrices are what is claimed, and the evidence notes the angles.
 // Method: everything exact in ℚ(√3), where cos and sin of multiples of π/3 lie: eq. (1) for the triangle pair, the
 //   printed SVD and polar decomposition, and the four goodness statements by the exact deciders of Defs 2.2.1 and
-//   2.2.2. Draws thesis Figs 2.2–2.5.
-// Sizes: one example at either size.
+//   2.2.2. Draws thesis Figs 2.2–2.5. Proof (issue 10): the same statements as sentences in r3 with r3² = 3, r3 > 0
+//   (so r3 = √3), decided by QEPCAD B and Z3: the decompositions and eq. (1) at once, and each goodness statement
+//   at level D (area, Lemma L1) or E (norm, Lemmas L3, L4); under the full size also SVD area at level L. Beyond
+//   the thesis: the SVD interpolation of diag(2, 1) is good for norm for no β ≠ 0 (Lemma L9).
+// Sizes: one example at either size; the full size adds the level-L sentence.
 
 using affinterp::local::det2;
 using affinterp::local::exactly_equal;
@@ -59,6 +61,63 @@ nlohmann::json surd_matrix(const Mat2<QSqrt3>& M) {
   return rows;
 }
 
+/// a + b√3 as the polynomial a + b·r3.
+Polynomial in_r3(const QSqrt3& u) { return Polynomial(u.a) + Polynomial(u.b) * var("r3"); }
+
+PolyMat2 in_r3(const Mat2<QSqrt3>& M) { return {{{in_r3(M(0, 0)), in_r3(M(0, 1))}, {in_r3(M(1, 0)), in_r3(M(1, 1))}}}; }
+
+/// Some entry of X − Y is not 0.
+Formula differ(const PolyMat2& X, const PolyMat2& Y) {
+  std::vector<Formula> parts;
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) parts.push_back(logic::not_equal(X[i][j], Y[i][j]));
+  return logic::disjunction(std::move(parts));
+}
+
+/// The proof: every statement of the example as an existential sentence in r3 = √3 that is empty iff it holds.
+ProofPlan proof_plan(const ClaimContext& ctx, const affinterp::local::Triangle<QSqrt3>& P,
+                     const affinterp::local::Triangle<QSqrt3>& Q, const Mat2<QSqrt3>& A_printed,
+                     const Mat2<QSqrt3>& D_printed, const Mat2<QSqrt3>& S_printed) {
+  const Polynomial r3 = var("r3");
+  const Formula sqrt3 = logic::equal(r3 * r3, 3) && logic::greater(r3, 0);
+  const PolyMat2 A = in_r3(A_printed), D = in_r3(D_printed), S = in_r3(S_printed);
+  using affinterp::claims::local::product;  // of polynomial matrices
+  const PolyMat2 svd = product(product(in_r3(rotation_pi_thirds(1)), D), in_r3(rotation_pi_thirds(-5)));
+  const PolyMat2 polar = product(in_r3(rotation_pi_thirds(-4)), S);
+  // Eq. (1): A p_j + d = q_j with d = 0, i.e. A P = Q column by column.
+  std::vector<Formula> eq1;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 2; ++i)
+      eq1.push_back(logic::not_equal(A[i][0] * in_r3(P(0, j)) + A[i][1] * in_r3(P(1, j)), in_r3(Q(i, j))));
+  const Formula S_positive = logic::greater(S[0][0], 0) && logic::greater(det(S), 0);
+  const auto in_sqrt3 = [&](std::string name, std::string meaning, const Formula& f) {
+    return sentence(std::move(name), std::move(meaning), {"r3"}, sqrt3 && f);
+  };
+  ProofPlan plan{
+      "the worked example: r3 = sqrt 3 (r3^2 = 3, r3 > 0); entries in Q(sqrt 3)",
+      "every statement as an existential sentence in r3 that is empty iff it holds: the decompositions and eq. (1) "
+      "by their entries; Def 2.2.1 at level D (Lemma L1) for det((1-t)I + tB), B = A, D, S (Lemma L5: the "
+      "rotations have det 1); Def 2.2.2 at level E (Lemmas L3, L4) for ((1-t)I + tB)v, B = A, S; beyond the "
+      "thesis, the SVD interpolation of D = diag(2, 1) at level G (Lemma L9) for beta != 0" +
+          std::string(ctx.size == Size::full ? "; SVD area also at level L (Def 2.2.1 as written)" : ""),
+      {in_sqrt3("decompositions-wrong",
+                "R_{pi/3} D R_{-5pi/3} != A, R_{-4pi/3} S != A, S not positive definite, or A P != Q (eq. (1))",
+                differ(svd, A) || differ(polar, A) || !S_positive || logic::disjunction(eq1)),
+       in_sqrt3("linear-good-area", "the linear interpolation of A is good for area", area_property(A, "D")),
+       in_sqrt3("linear-good-norm", "the linear interpolation of A is good for norm", norm_property(A, "E")),
+       in_sqrt3("svd-not-good-area", "the SVD interpolation (D = diag(2, 1)) is not good for area",
+                !area_property(D, "D")),
+       in_sqrt3("polar-not-good-area", "the polar interpolation (S) is not good for area", !area_property(S, "D")),
+       in_sqrt3("polar-not-good-norm", "the polar interpolation (S) is not good for norm", !norm_property(S, "E")),
+       sentence("svd-good-norm-some-beta",
+                "beyond the thesis: some beta != 0 makes the SVD interpolation of diag(2, 1) good for norm", {"beta"},
+                logic::not_equal(var("beta"), 0) && svd_norm_property(Polynomial(2), Polynomial(1), var("beta")))},
+      {}};
+  if (ctx.size == Size::full)
+    plan.sentences.push_back(in_sqrt3("svd-not-good-area.L", "the same at level L", !area_property(D, "L")));
+  return plan;
+}
+
 Outcome check(const ClaimContext& ctx) {
   affinterp::local::Triangle<QSqrt3> P, Q;
   P << q(0), q(0), q(2), q(0), q(3), q(0);  // p1 = (0,0), p2 = (0,3), p3 = (2,0)
@@ -82,9 +141,8 @@ Outcome check(const ClaimContext& ctx) {
   const bool linear_area = good_for_area(A_printed), linear_norm = good_for_norm(A_printed);
   const bool svd_area = good_for_area(D), polar_area = good_for_area(S_printed), polar_norm = good_for_norm(S_printed);
   // Not stated in the thesis: the SVD interpolation's norm behaviour, with the printed β and its principal value.
-  const bool svd_norm_printed_beta =
-      !affinterp::local::svd_norm_failure(2, 1, -5 * std::numbers::pi / 3, {}).has_value();
-  const bool svd_norm_principal_beta = !affinterp::local::svd_norm_failure(2, 1, std::numbers::pi / 3, {}).has_value();
+  const bool svd_norm_printed_beta = affinterp::local::svd_good_for_norm_at_pi_multiple(2, 1, Rational(-5) / 3);
+  const bool svd_norm_principal_beta = affinterp::local::svd_good_for_norm_at_pi_multiple(2, 1, Rational(1) / 3);
 
   const bool statements_hold = !linear_area && !linear_norm && svd_area && polar_area && polar_norm;
   Outcome outcome;
@@ -101,8 +159,8 @@ Outcome check(const ClaimContext& ctx) {
       {"svd_good_for_area", svd_area},
       {"polar_good_for_area", polar_area},
       {"polar_good_for_norm", polar_norm},
-      {"svd_good_for_norm (not stated; sampled) with beta = -5pi/3", svd_norm_printed_beta},
-      {"svd_good_for_norm (not stated; sampled) with beta = pi/3", svd_norm_principal_beta},
+      {"svd_good_for_norm (not stated; Lemmas L9 + L12) with beta = -5pi/3", svd_norm_printed_beta},
+      {"svd_good_for_norm (not stated; Lemmas L9 + L12) with beta = pi/3", svd_norm_principal_beta},
       {"angle_conventions",
        "beta = -5pi/3 lies outside the thesis's own range [0, 2pi) (same matrix as pi/3); the polar angle "
        "-4pi/3 = alpha + beta lies outside Kaji's branch (-pi, pi] (principal value 2pi/3). The matrices are "
@@ -117,6 +175,7 @@ Outcome check(const ClaimContext& ctx) {
                           "neither area nor norm, SVD is good for area, polar for area and norm (printed angles lie "
                           "outside the stated ranges)"
                         : "the example's matrices or goodness statements do not all hold";
+  attach_proof(outcome, run_proof(ctx, proof_plan(ctx, P, Q, A_printed, D, S_printed)));
   if (ctx.draws_figures()) outcome.figures = ctx.figure_refs(plots::draw_thesis_figures_2_2_to_2_5(ctx.figure_dir));
   if (outcome.verdict == Verdict::refuted)
     outcome.counterexample = {

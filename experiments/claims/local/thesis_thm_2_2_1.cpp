@@ -1,5 +1,6 @@
 #include "experiments/claims/claim.hpp"
 #include "experiments/claims/local/area_theorem.hpp"
+#include "experiments/claims/local/area_theorem_proof.hpp"
 #include "experiments/claims/local/area_witness.hpp"
 #include "experiments/claims/local/condition_sweep.hpp"
 #include "experiments/claims/local/simple_values.hpp"
@@ -26,11 +27,32 @@ const ClaimDeclaration claim{{
 }};
 
 // Reading: "good for area" (Def 2.2.1) = det A_l(t) weakly monotone and > 0 on [0, 1]; A ranges over GL+(2).
-// Method: over a (tr A, det A) grid, with a matrix of that trace and determinant whose other entries are drawn at
-//   random (the property must not depend on them), the printed condition against the exact decision of Def 2.2.1
-//   (theory/local/goodness.hpp), and the corrected condition over the same cases; the counterexample is the
-//   simplest integer matrix where the printed condition holds and A_l(t) is not good for area.
-// Sizes: quick step 1/4; full step 1/16; tr A ∈ [−4, 6], det A ∈ (0, 5].
+// Method: proof for all reals (issue 10; area_theorem_proof.hpp): the printed condition and its correction each
+//   against Def 2.2.1 as two sentences in a, b, c, d (A = [[a, b], [c, d]], det A > 0) at level E (Lemmas L1,
+//   L2), decided by QEPCAD B and Z3; the printed condition's counterexample from the deciders' point, shrunk and
+//   re-verified by goodness.hpp. Second line: over a (tr A, det A) grid, with a matrix of that trace and determinant
+//   whose other entries are drawn at random (the property must not depend on them), the printed condition against the
+//   exact decision of Def 2.2.1 (theory/local/goodness.hpp), and the corrected condition over the same cases; the
+//   counterexample is the simplest integer matrix where the printed condition holds and A_l(t) is not good for area.
+// Sizes: quick step 1/4, sentences at level E; full step 1/16, also levels D and L; tr A ∈ [−4, 6], det A ∈ (0, 5].
+
+/// A = [[a, b], [c, d]] over GL+(2).
+AreaParameters linear_parameters() {
+  const Polynomial a = var("a"), b = var("b"), c = var("c"), d = var("d");
+  const PolyMat2 A{{{a, b}, {c, d}}};
+  const auto A_at = [](const logic::Point& p) {
+    Mat2<Rational> A;
+    A << p.at("a"), p.at("b"), p.at("c"), p.at("d");
+    return A;
+  };
+  return {A,
+          {"a", "b", "c", "d"},
+          logic::greater(det(A), 0),
+          "A = [[a, b], [c, d]] real with det A > 0",
+          A_at,
+          [A_at](const logic::Point& p) { return det2(A_at(p)) > 0; },
+          ""};
+}
 
 /// The simplest integer matrix (entries in [−2, 2], least Σ|a_ij|) with det > 0 where `condition` holds
 /// and the linear interpolation is not good for area.
@@ -87,6 +109,11 @@ Outcome check(const ClaimContext& ctx) {
                               {"good_for_area", false},
                               {"witness", area_witness(shown)}};
   }
+  const AreaParameters parameters = linear_parameters();
+  ProofRun proof = run_proof(ctx, area_theorem_plan(ctx, parameters));
+  require_agreement(outcome, area_proof_verdict(proof));
+  if (printed.disagreements() > 0) outcome.counterexample["from_proof"] = area_proof_counterexample(proof, parameters);
+  attach_proof(outcome, std::move(proof));
   if (ctx.draws_figures())
     outcome.figures = draw_area_map<Mat2<Rational>>(
         ctx, "thesis-thm-2.2.1-region", "Thm 2.2.1 (linear interpolation): printed condition vs good for area", "tr A",

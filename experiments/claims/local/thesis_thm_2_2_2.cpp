@@ -1,5 +1,6 @@
 #include "experiments/claims/claim.hpp"
 #include "experiments/claims/local/area_theorem.hpp"
+#include "experiments/claims/local/area_theorem_proof.hpp"
 #include "experiments/claims/local/area_witness.hpp"
 #include "experiments/claims/local/condition_sweep.hpp"
 #include "experiments/claims/local/simple_values.hpp"
@@ -24,9 +25,25 @@ const ClaimDeclaration claim{{
 
 // Reading: Def 2.2.1 as for Thm 2.2.1; A_s(t) = R_{tα}((1−t)I + tD)R_{tβ} with D = diag(x, y), and
 //   det A_s(t) = det((1−t)I + tD) for every α, β, so the (x, y) plane decides the theorem.
-// Method: over an (x, y) grid, x ≥ y > 0, the printed condition (Thm 2.2.1's with tr D for tr A) against the exact
+// Method: proof for all reals (issue 10; area_theorem_proof.hpp): the printed condition and its correction each
+//   against Def 2.2.1 as two sentences at level E (Lemmas L1, L2, L5), decided by QEPCAD B and Z3; the printed
+//   condition's counterexample from the deciders' point, shrunk and re-verified by goodness.hpp. Second line:
+//   over an (x, y) grid, x ≥ y > 0, the printed condition (Thm 2.2.1's with tr D for tr A) against the exact
 //   decision of Def 2.2.1 and against the corrected condition.
-// Sizes: quick step 1/4; full step 1/32; x, y ∈ (0, 4].
+// Sizes: quick step 1/4, sentences at level E; full step 1/32, also levels D and L; x, y ∈ (0, 4].
+
+/// D = diag(x, y), x, y > 0: det A_s(t) = det((1−t)I + tD) (Lemma L5).
+AreaParameters svd_parameters() {
+  const Polynomial x = var("x"), y = var("y");
+  const auto D_at = [](const logic::Point& p) { return diagonal(p.at("x"), p.at("y")); };
+  return {{{{x, Polynomial(0)}, {Polynomial(0), y}}},
+          {"x", "y"},
+          logic::greater(x, 0) && logic::greater(y, 0),
+          "D = diag(x, y) with x, y > 0 real (every alpha, beta)",
+          D_at,
+          [](const logic::Point& p) { return p.at("x") > 0 && p.at("y") > 0; },
+          "det A_s(t) = det R_{t alpha} det((1-t)I + tD) det R_{t beta} and det R = cos^2 + sin^2 = 1 (Lemma L5)"};
+}
 
 Outcome check(const ClaimContext& ctx) {
   const Rational step = ctx.pick(Rational(1) / 4, Rational(1) / 32);
@@ -58,6 +75,11 @@ Outcome check(const ClaimContext& ctx) {
                               {"good_for_area", false},
                               {"witness", area_witness(diagonal(x, y))}};
   }
+  const AreaParameters parameters = svd_parameters();
+  ProofRun proof = run_proof(ctx, area_theorem_plan(ctx, parameters));
+  require_agreement(outcome, area_proof_verdict(proof));
+  if (printed.disagreements() > 0) outcome.counterexample["from_proof"] = area_proof_counterexample(proof, parameters);
+  attach_proof(outcome, std::move(proof));
   if (ctx.draws_figures())
     outcome.figures = draw_area_map<Case>(
         ctx, "thesis-thm-2.2.2-region", "Thm 2.2.2 (SVD interpolation): printed condition vs good for area", "x", "y",

@@ -1,15 +1,15 @@
 #include "experiments/claims/claim.hpp"
 #include "experiments/claims/local/condition_sweep.hpp"
+#include "experiments/claims/local/local_proof.hpp"
 #include "experiments/claims/local/region_figure.hpp"
 #include "experiments/claims/local/simple_values.hpp"
 #include "experiments/claims/values.hpp"
 #include "theory/exact/rational.hpp"
 #include "theory/local/svd_homotopy.hpp"
-#include "theory/local/svd_norm_sampling.hpp"
+#include "theory/local/svd_norm_goodness.hpp"
 #include "theory/local/thesis_conditions.hpp"
 
 #include <map>
-#include <numbers>
 #include <numeric>
 #include <string>
 #include <tuple>
@@ -33,15 +33,19 @@ const ClaimDeclaration claim{{
 // Reading: A_s(t) = R_{tα}((1−t)I + tD)R_{tβ} is built from a given SVD (x, y, α, β), x, y > 0, α, β ∈ [0, 2π) as
 //   in the thesis, and the condition is on x, y only. |A_s(t)v| = |((1−t)I + tD)R_{tβ}v|: α drops out, β does not,
 //   and the proof's formula for |A_s(t)v|² omits R_{tβ}.
-// Method: over an (x, y, β) grid, the printed condition against a sampled decision of Def 2.2.2
-//   (theory/local/svd_norm_sampling.hpp: directions × times, a relative tolerance); β = 0, the case the proof
-//   computes, is tallied apart. The simplest failing case is re-verified in Real50 from the homotopy itself,
-//   first at v = e1, e2 and quarter times.
-// Sizes: quick (x, y) step 1/2, 12 angles, 48 directions × 48 times; full step 1/8, 48 angles, 96 × 96.
+// Method: proof for all reals (issue 10): by Lemma L9 (analytic; research FINDINGS §2) A_s is good for norm iff
+//   G(t) ≥ 0 on [0, 1] (level G). Sentences in x, y, β decided by QEPCAD B and Z3: printed condition ∧ ¬G-level
+//   property (non-empty: its point, shrunk and re-verified, is the counterexample), ¬condition ∧ G(1) ≥ 0 (the
+//   property's instance t = 1: empty, so the property implies the condition), and both directions at β = 0 (empty:
+//   the printed condition is exact there); under the full size also β = 0 at level D of Def 2.2.2 without L9.
+//   Second line: over an (x, y, β) grid, the printed condition against the exact decision of Def 2.2.2
+//   (theory/local/svd_norm_goodness.hpp: Lemmas L9 + L12, good iff β²(x−y)²(x+y)² ≤ 4xy(x−1)(y−1), decided
+//   exactly for β a rational multiple of π); β = 0, the case the proof computes, is tallied apart. The simplest
+//   failing case is re-verified in Real50 from the homotopy itself, at v = e1, e2 and quarter times.
+// Sizes: quick (x, y) step 1/2, 12 angles; full step 1/8, 48 angles, and the level-D sentences at β = 0.
 
 using affinterp::local::Mat2;
-using affinterp::local::SamplingResolution;
-using affinterp::local::svd_norm_failure;
+using affinterp::local::svd_good_for_norm_at_pi_multiple;
 using affinterp::local::thm_2_2_3_condition;
 using exact::Rational;
 using exact::Real50;
@@ -53,6 +57,30 @@ Real50 svd_norm_squared_50(const Real50& x, const Real50& y, const Real50& beta,
   return (A(t) * v).squaredNorm();
 }
 
+/// Lemma L9's direction: with m = (x − 1, y − 1) of one sign and G(1) < 0, G_1 has an eigenvalue of the
+/// other sign; along v = (cos φ, sin φ), φ = ψ − β with ψ its eigenvector's angle, d/dt ‖A_s(t)v‖² has the
+/// sign of m at t = 0 and the other at t = 1, so an interior time beats both ends. Times scanned at j/256.
+nlohmann::json lemma_l9_witness(const Real50& x, const Real50& y, const Real50& beta) {
+  const Real50 m1 = x - 1, m2 = y - 1, a = x, b = y;  // a, b = 1 + t m at t = 1
+  const Real50 p = m1 * a, r = m2 * b, q = beta * (b * b - a * a) / 2;
+  const Real50 half_gap = sqrt((p - r) * (p - r) / 4 + q * q);
+  const Real50 lambda = m1 + m2 >= 0 ? (p + r) / 2 - half_gap : (p + r) / 2 + half_gap;
+  const Real50 psi = abs(q) > abs(lambda - p) ? atan2(lambda - p, q) : atan2(q, lambda - r);
+  const Real50 phi = psi - beta;
+  const Real50 f0 = svd_norm_squared_50(x, y, beta, phi, 0), f1 = svd_norm_squared_50(x, y, beta, phi, 1);
+  int best = -1;
+  Real50 best_score = 0;
+  for (int j = 1; j < 256; ++j) {
+    const Real50 f = svd_norm_squared_50(x, y, beta, phi, Real50(j) / 256), score = (f - f0) * (f - f1);
+    if (score > best_score) best = j, best_score = score;
+  }
+  if (best < 0) return nullptr;
+  return {{"v", {Real50(cos(phi)).str(30), Real50(sin(phi)).str(30)}},
+          {"t", {"0", exact::to_string(Rational(best) / 256), "1"}},
+          {"|A_s(t)v|^2 (Real50)",
+           {f0.str(30), svd_norm_squared_50(x, y, beta, phi, Real50(best) / 256).str(30), f1.str(30)}}};
+}
+
 /// β = kπ/m as a string "k*pi/m" in lowest terms.
 std::string angle_name(int k, int m) {
   const int g = std::gcd(k, m);
@@ -61,10 +89,62 @@ std::string angle_name(int k, int m) {
   return m / g == 1 ? numerator : numerator + "/" + std::to_string(m / g);
 }
 
+/// The proof: the printed condition against Def 2.2.2 for A_s(t) (Lemma L9), for all real x, y > 0 and β.
+ProofPlan proof_plan(const ClaimContext& ctx) {
+  const Polynomial x = var("x"), y = var("y"), beta = var("beta"), zero(0);
+  const Formula domain = logic::greater(x, 0) && logic::greater(y, 0), condition = thm_2_2_3_formula(x, y);
+  ProofPlan plan{
+      "D = diag(x, y) with x, y > 0 and the right angle beta real (radians; alpha plays no part)",
+      "Lemma L9 (analytic, research FINDINGS §2): A_s(t) = R_{t alpha}((1-t)I + tD)R_{t beta} is good for norm iff "
+      "G(t) = 4(x-1)(y-1)(1+t(x-1))(1+t(y-1)) - beta^2 t^2 (x-y)^2 (2+t(x+y-2))^2 >= 0 for all t in [0, 1] (level "
+      "G). printed.cond-not-prop.G non-empty refutes the printed condition; printed.prop-not-cond.inst (the "
+      "property's instance t = 1, a weakening) empty shows the property implies it; at beta = 0 both directions "
+      "empty: the printed condition is exact there (the thesis's proof drops R_{t beta})" +
+          std::string(ctx.size == Size::full
+                          ? "; beta = 0 also at level D of Def 2.2.2 for (1-t)I + tD, without Lemma L9 (Lemma L1)"
+                          : ""),
+      {cond_not_prop("printed.", "G", {"x", "y", "beta"}, domain, condition, svd_norm_property(x, y, beta)),
+       sentence("printed.prop-not-cond.inst",
+                "x, y > 0, beta where G(1) >= 0 (implied by the property) and the printed condition fails",
+                {"x", "y", "beta"},
+                domain && !condition && logic::greater_equal(svd_norm_G(x, y, beta, Polynomial(1)), 0)),
+       cond_not_prop("beta0.", "G", {"x", "y"}, domain, condition, svd_norm_property(x, y, zero)),
+       prop_not_cond("beta0.", "G", {"x", "y"}, domain, condition, svd_norm_property(x, y, zero))},
+      {}};
+  if (ctx.size == Size::full) {
+    const PolyMat2 D{{{x, zero}, {zero, y}}};
+    plan.sentences.push_back(cond_not_prop("beta0.", "D", {"x", "y"}, domain, condition, norm_property(D, "D")));
+    plan.sentences.push_back(prop_not_cond("beta0.", "D", {"x", "y"}, domain, condition, norm_property(D, "D")));
+  }
+  return plan;
+}
+
+Real50 real50(const Rational& q) { return Real50(numerator(q)) / Real50(denominator(q)); }
+
+/// The proof's counterexample: printed.cond-not-prop.G's point shrunk while the printed condition holds and the
+/// exact decider (Lemmas L9 + L12) says not good; G(1) and an explicit direction (Real50) re-verify it.
+nlohmann::json proof_counterexample(const ProofRun& run) {
+  const auto fails = [](const logic::Point& p) {
+    const Rational &x = p.at("x"), &y = p.at("y"), &beta = p.at("beta");
+    return x > 0 && y > 0 && thm_2_2_3_condition(x, y) &&
+           !affinterp::local::svd_good_for_norm<Rational>(x, y, beta * beta);
+  };
+  const auto point = counterexample(run, "printed.cond-not-prop.G", fails, {{{"x", 2}, {"y", 1}, {"beta", 1}}});
+  if (!point) return nullptr;
+  const Rational &x = point->at("x"), &y = point->at("y"), &beta = point->at("beta");
+  return {{"point", exact_point({{"x", x}, {"y", y}, {"beta", beta}})},
+          {"printed_condition", true},
+          {"G(1) = 4xy(x-1)(y-1) - beta^2(x-y)^2(x+y)^2",
+           exact::to_string(affinterp::local::svd_norm_margin<Rational>(x, y, beta * beta))},
+          {"witness", lemma_l9_witness(real50(x), real50(y), real50(beta))},
+          {"found_by",
+           "the deciders' sample point of printed.cond-not-prop.G, shrunk to small rationals; not good by "
+           "Lemmas L9 + L12 (G(1) < 0, exact) and along the witness direction (Real50)"}};
+}
+
 Outcome check(const ClaimContext& ctx) {
   // (x, y) = (i, j)/per_unit in (0, 3]; β = 2πk/angles in [0, 2π) (the thesis takes α, β ∈ [0, 2π)).
   const int per_unit = ctx.pick(2, 8), angles = ctx.pick(12, 48);
-  const SamplingResolution resolution{ctx.pick<std::size_t>(48, 96), ctx.pick<std::size_t>(48, 96), 1e-9};
   using Case = std::tuple<int, int, int>;  // (i, j, k): x = i/per_unit, y = j/per_unit, β = 2πk/angles
   std::vector<Case> cases;
   for (int i = 1; i <= 3 * per_unit; ++i)
@@ -72,11 +152,10 @@ Outcome check(const ClaimContext& ctx) {
       for (int k = 0; k < angles; ++k) cases.emplace_back(i, j, k);
   const auto x_of = [&](const Case& c) { return Rational(std::get<0>(c)) / per_unit; };
   const auto y_of = [&](const Case& c) { return Rational(std::get<1>(c)) / per_unit; };
-  const auto beta_of = [&](const Case& c) { return 2 * std::numbers::pi * std::get<2>(c) / angles; };
+  const auto beta_over_pi = [&](const Case& c) { return Rational(2 * std::get<2>(c)) / angles; };
   const auto condition = [&](const Case& c) { return thm_2_2_3_condition(x_of(c), y_of(c)); };
   const auto property = [&](const Case& c) {
-    return !svd_norm_failure(static_cast<double>(x_of(c)), static_cast<double>(y_of(c)), beta_of(c), resolution)
-                .has_value();
+    return svd_good_for_norm_at_pi_multiple(x_of(c), y_of(c), beta_over_pi(c));
   };
   const auto cost = [&](const Case& c) {  // simplest first, the usual order x >= y preferred
     return height(x_of(c)) + height(y_of(c)) + height(Rational(2 * std::get<2>(c)) / angles) +
@@ -90,22 +169,19 @@ Outcome check(const ClaimContext& ctx) {
 
   Outcome outcome;
   outcome.evidence.method =
-      "sampled decision of Def 2.2.2 for A_s(t) vs the printed condition over an (x, y, beta) grid; "
-      "failures re-verified in Real50";
+      "exact decision of Def 2.2.2 for A_s(t) (Lemmas L9 + L12) vs the printed condition over an (x, y, beta) "
+      "grid; the shown failure re-verified in Real50 from the homotopy";
   outcome.evidence.sample_size = tally.cases;
-  outcome.evidence.tolerance = resolution.relative_tolerance;
   outcome.evidence.details["reading"] =
       "A_s(t) = R_{t alpha}((1-t)I + tD)R_{t beta} is built from a given SVD (x, y, alpha, beta), x, y > 0, alpha, "
       "beta in "
       "[0, 2pi) as in the thesis; the condition is on x, y only. |A_s(t)v| = |((1-t)I + tD)R_{t beta}v|, so alpha "
       "drops out "
       "but beta does not: the proof's formula for |A_s(t)v|^2 omits R_{t beta}.";
-  outcome.evidence.details["resolution"] = {{"directions", resolution.directions},
-                                            {"times", resolution.times},
-                                            {"relative_tolerance", resolution.relative_tolerance},
-                                            {"meaning",
-                                             "a direction fails when sampled |A_s(t)v|^2 both rises and falls by more "
-                                             "than the tolerance; 'good' = no failing direction at this resolution"}};
+  outcome.evidence.details["decider"] =
+      "Lemma L9: good for norm iff G(t) = 4(x-1)(y-1)(1+t(x-1))(1+t(y-1)) - beta^2 t^2 (x-y)^2 (2+t(x+y-2))^2 >= 0 "
+      "on [0, 1]; Lemma L12: iff G(1) >= 0, i.e. beta^2 (x-y)^2 (x+y)^2 <= 4xy(x-1)(y-1), beta in radians; decided "
+      "exactly against rational bounds on pi (theory/local/svd_norm_goodness.hpp)";
   outcome.evidence.details["grid"] =
       "x, y in (0, 3] step 1/" + std::to_string(per_unit) + "; beta = 2 pi k/" + std::to_string(angles);
   outcome.evidence.details["printed_condition"] = tally.summary();
@@ -114,7 +190,7 @@ Outcome check(const ClaimContext& ctx) {
   if (tally.disagreements() == 0) {
     outcome.verdict = Verdict::confirmed;
     outcome.summary =
-        "the printed condition matches the sampled decision on all " + std::to_string(tally.cases) + " cases";
+        "the printed condition matches the exact decision on all " + std::to_string(tally.cases) + " cases";
   } else if (tally.condition_only.count > 0) {
     // Shrink: the simplest failing grid case; then look for a witness at v = e1, e2 and quarter times.
     const Case& c = *tally.condition_only.simplest;
@@ -137,25 +213,13 @@ Outcome check(const ClaimContext& ctx) {
                          {"|A_s(t)v|^2 (Real50)", {fa.str(30), fb.str(30), fe.str(30)}}};
           }
     }
-    if (witness.is_null()) {
-      const auto w =
-          *svd_norm_failure(static_cast<double>(x), static_cast<double>(y), static_cast<double>(beta), resolution);
-      const Real50 phi(w.phi);
-      witness = {{"v", {Real50(cos(phi)).str(30), Real50(sin(phi)).str(30)}},
-                 {"t",
-                  {exact::to_string(exact::from_double(w.t_a)), exact::to_string(exact::from_double(w.t_b)),
-                   exact::to_string(exact::from_double(w.t_c))}},
-                 {"|A_s(t)v|^2 (Real50)",
-                  {svd_norm_squared_50(x, y, beta, phi, Real50(w.t_a)).str(30),
-                   svd_norm_squared_50(x, y, beta, phi, Real50(w.t_b)).str(30),
-                   svd_norm_squared_50(x, y, beta, phi, Real50(w.t_c)).str(30)}}};
-    }
+    if (witness.is_null()) witness = lemma_l9_witness(x, y, beta);
     const affinterp::local::Svd<Real50> svd{Real50(0), x, y, beta};
     outcome.verdict = Verdict::refuted;
     outcome.summary = std::to_string(tally.condition_only.count) + " of " + std::to_string(tally.cases) +
                       " (x, y, beta) cases satisfy the printed condition but |A_s(t)v| is not monotone for some v; " +
                       std::to_string(tally.property_only.count) +
-                      " fail the condition yet sample as good. At beta = 0 the "
+                      " fail the condition yet are good. At beta = 0 the "
                       "condition is exact (" +
                       std::to_string(unrotated_tally.disagreements()) + " disagreements of " +
                       std::to_string(unrotated_tally.cases) + "): the proof drops R_{t beta}";
@@ -170,10 +234,22 @@ Outcome check(const ClaimContext& ctx) {
   } else {
     outcome.verdict = Verdict::refuted;
     outcome.summary =
-        std::to_string(tally.property_only.count) + " cases fail the printed condition but sample as good for norm";
+        std::to_string(tally.property_only.count) + " cases fail the printed condition but are good for norm";
   }
+  ProofRun proof = run_proof(ctx, proof_plan(ctx));
+  if (proof.decided_by_two()) {
+    const bool printed_exact =
+        proof.result("printed.cond-not-prop.G") == "empty" && proof.result("printed.prop-not-cond.inst") == "empty";
+    require_agreement(outcome, printed_exact ? Verdict::confirmed : Verdict::refuted);
+    if (proof.result("printed.cond-not-prop.G") == "non-empty")
+      outcome.counterexample["from_proof"] = proof_counterexample(proof);
+  }
+  outcome.summary +=
+      ". Exact region (atlas.svd.norm, Lemmas L9 + L12): good iff beta^2 (x-y)^2 (x+y)^2 <= 4xy(x-1)(y-1), beta in "
+      "radians";
+  attach_proof(outcome, std::move(proof));
   if (ctx.draws_figures()) {
-    // Per (x, y): good for every sampled β (the theorem's "iff" over all SVDs) vs the printed condition.
+    // Per (x, y): good for every grid β (the theorem's "iff" over all SVDs) vs the printed condition.
     std::map<std::pair<int, int>, bool> good_for_all;
     for (const Case& c : cases) {
       auto [it, fresh] = good_for_all.try_emplace({std::get<0>(c), std::get<1>(c)}, true);
@@ -186,8 +262,8 @@ Outcome check(const ClaimContext& ctx) {
     }
     outcome.figures =
         draw_region_figure(ctx, "thesis-thm-2.2.3-region",
-                           "Thm 2.2.3 (SVD interpolation): printed condition vs good for norm for every sampled beta",
-                           "x", "y", points, 0.5 / per_unit);
+                           "Thm 2.2.3 (SVD interpolation): printed condition vs good for norm for every grid beta", "x",
+                           "y", points, 0.5 / per_unit);
   }
   return outcome;
 }

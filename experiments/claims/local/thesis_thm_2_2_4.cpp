@@ -1,5 +1,6 @@
 #include "experiments/claims/claim.hpp"
 #include "experiments/claims/local/area_theorem.hpp"
+#include "experiments/claims/local/area_theorem_proof.hpp"
 #include "experiments/claims/local/area_witness.hpp"
 #include "experiments/claims/local/condition_sweep.hpp"
 #include "experiments/claims/local/simple_values.hpp"
@@ -24,9 +25,28 @@ const ClaimDeclaration claim{{
 
 // Reading: Def 2.2.1 as for Thm 2.2.1; A_p(t) = R_{tγ}((1−t)I + tS) with S = [[x, h], [h, y]] positive definite, and
 //   det A_p(t) = det((1−t)I + tS) for every γ.
-// Method: over an (x, y, h) grid with xy > h², the printed condition (Thm 2.2.1's with tr S for tr A) against the
+// Method: proof for all reals (issue 10; area_theorem_proof.hpp): the printed condition and its correction each
+//   against Def 2.2.1 as two sentences at level E (Lemmas L1, L2, L5), decided by QEPCAD B and Z3; the printed
+//   condition's counterexample from the deciders' point, shrunk and re-verified by goodness.hpp. Second line:
+//   over an (x, y, h) grid with xy > h², the printed condition (Thm 2.2.1's with tr S for tr A) against the
 //   exact decision of Def 2.2.1 and against the corrected condition. The figure is the slice h = 1/2.
-// Sizes: quick step 1/4; full step 1/16; x, y ∈ (0, 4], h ∈ [−4, 4].
+// Sizes: quick step 1/4, sentences at level E; full step 1/16, also levels D and L; x, y ∈ (0, 4], h ∈ [−4, 4].
+
+/// S = [[x, h], [h, y]] positive definite: det A_p(t) = det((1−t)I + tS) (Lemma L5).
+AreaParameters polar_parameters() {
+  const Polynomial x = var("x"), y = var("y"), h = var("h");
+  const PolyMat2 S{{{x, h}, {h, y}}};
+  const auto S_at = [](const logic::Point& p) { return symmetric(p.at("x"), p.at("y"), p.at("h")); };
+  return {S,
+          {"x", "y", "h"},
+          logic::greater(x, 0) && logic::greater(y, 0) && logic::greater(det(S), 0),
+          "S = [[x, h], [h, y]] real positive definite (every gamma)",
+          S_at,
+          [](const logic::Point& p) {
+            return p.at("x") > 0 && p.at("y") > 0 && p.at("x") * p.at("y") > p.at("h") * p.at("h");
+          },
+          "det A_p(t) = det R_{t gamma} det((1-t)I + tS) and det R = cos^2 + sin^2 = 1 (Lemma L5)"};
+}
 
 Outcome check(const ClaimContext& ctx) {
   const Rational step = ctx.pick(Rational(1) / 4, Rational(1) / 16);
@@ -62,6 +82,11 @@ Outcome check(const ClaimContext& ctx) {
                               {"good_for_area", false},
                               {"witness", area_witness(S_of(c))}};
   }
+  const AreaParameters parameters = polar_parameters();
+  ProofRun proof = run_proof(ctx, area_theorem_plan(ctx, parameters));
+  require_agreement(outcome, area_proof_verdict(proof));
+  if (printed.disagreements() > 0) outcome.counterexample["from_proof"] = area_proof_counterexample(proof, parameters);
+  attach_proof(outcome, std::move(proof));
   if (ctx.draws_figures()) {
     std::vector<Case> slice;  // h = 1/2: the (x, y) plane of S = [[x, 1/2], [1/2, y]]
     for (const Case& c : cases)

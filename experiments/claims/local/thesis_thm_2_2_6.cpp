@@ -1,6 +1,7 @@
 #include "experiments/claims/claim.hpp"
 #include "experiments/claims/local/area_theorem.hpp"
 #include "experiments/claims/local/condition_sweep.hpp"
+#include "experiments/claims/local/local_proof.hpp"
 #include "experiments/claims/local/simple_values.hpp"
 #include "experiments/claims/values.hpp"
 #include "theory/local/goodness.hpp"
@@ -22,10 +23,50 @@ const ClaimDeclaration claim{{
 }};
 
 // Reading: Def 2.2.1 as for Thm 2.2.1, for the SVD and the polar interpolation of the same A.
-// Method: A = R_α D R_β with R_β a rational rotation ((1 − u², 2u)/(1 + u²)), so the polar factor S = R_βᵀ D R_β
-//   (thesis §2.2.3) is exact; α enters neither determinant. Over an (x, y, u) grid, good for area of A_s(t) against
-//   that of A_p(t), and the stronger fact behind it: det A_s(t) and det A_p(t) are the same polynomial.
-// Sizes: quick (x, y) and u steps 1/2; full 1/8; x ≥ y in (0, 4], u ∈ [−2, 2].
+// Method: proof for all reals (issue 10): with R_β = [[c, −s], [s, c]], c² + s² = 1 (every real β), and
+//   S = R_βᵀ D R_β, two sentences "one good for area, the other not" in x, y, c, s at level E (Lemmas L1, L2, L5,
+//   L11) and one "tr S ≠ tr D or det S ≠ det D" (the thesis's own route), decided by QEPCAD B and Z3; under the
+//   full size also level D. Second line: A = R_α D R_β with R_β a rational rotation ((1 − u², 2u)/(1 + u²)), so the
+//   polar factor S = R_βᵀ D R_β (thesis §2.2.3) is exact; α enters neither determinant. Over an (x, y, u) grid, good
+//   for area of A_s(t) against that of A_p(t), and the stronger fact behind it: det A_s(t) and det A_p(t) are the same
+//   polynomial.
+// Sizes: quick (x, y) and u steps 1/2, sentences at level E; full 1/8, also level D; x ≥ y in (0, 4], u ∈ [−2, 2].
+
+/// The proof: SVD and polar interpolation of A = R_α D R_β are good for area together, for every real x, y > 0, β.
+ProofPlan proof_plan(const ClaimContext& ctx) {
+  const Polynomial x = var("x"), y = var("y"), c = var("c"), s = var("s");
+  const PolyMat2 D{{{x, Polynomial(0)}, {Polynomial(0), y}}}, R = rotation(c, s);
+  const PolyMat2 S = product(product(transpose(R), D), R);  // the polar factor of A (Lemma L11)
+  const std::vector<std::string> variables{"x", "y", "c", "s"};
+  const Formula domain = logic::greater(x, 0) && logic::greater(y, 0) && logic::equal(c * c + s * s, 1);
+  ProofPlan plan{
+      "D = diag(x, y) with x, y > 0 and every real beta (R_beta = [[c, -s], [s, c]], c^2 + s^2 = 1); "
+      "S = R_beta^T D R_beta, the polar factor of A = R_alpha D R_beta",
+      "Def 2.2.1 for det A_s(t) = det((1-t)I + tD) and det A_p(t) = det((1-t)I + tS) (the rotations have "
+      "det c^2 + s^2 = 1, Lemma L5; A = (R_alpha R_beta) S as R_beta R_beta^T = (c^2 + s^2) I, L11) at "
+      "level E (Lemmas L1, L2, L2 decided as its own sentences): no point where exactly one is good" +
+          std::string(ctx.size == Size::full ? "; second formulation at level D (L1 as its own sentence)" : "") +
+          "; and the thesis's route: tr S = tr D and det S = det D wherever c^2 + s^2 = 1",
+      {lemma_L2(), lemma_L2_area()},
+      {{"R_beta R_beta^T = (c^2 + s^2) I (entry 11)", product(R, transpose(R))[0][0] - (c * c + s * s)},
+       {"R_beta R_beta^T = (c^2 + s^2) I (entry 12)", product(R, transpose(R))[0][1]},
+       {"det R_beta = c^2 + s^2", det(R) - (c * c + s * s)}}};
+  std::vector<std::string> levels{"E"};
+  if (ctx.size == Size::full) levels.push_back("D"), plan.sentences.push_back(lemma_L1());
+  for (const std::string& level : levels) {
+    const Formula svd_good = area_property(D, level), polar_good = area_property(S, level);
+    plan.sentences.push_back(sentence("svd-good-polar-not." + level,
+                                      "x, y, beta where the SVD interpolation is good for area and the polar one not",
+                                      variables, domain && svd_good && !polar_good));
+    plan.sentences.push_back(sentence("polar-good-svd-not." + level,
+                                      "x, y, beta where the polar interpolation is good for area and the SVD one not",
+                                      variables, domain && !svd_good && polar_good));
+  }
+  plan.sentences.push_back(
+      sentence("trace-det-differ", "x, y, beta where tr S != tr D or det S != det D", variables,
+               domain && (logic::not_equal(trace(S), trace(D)) || logic::not_equal(det(S), det(D)))));
+  return plan;
+}
 
 Outcome check(const ClaimContext& ctx) {
   const Rational step = ctx.pick(Rational(1) / 2, Rational(1) / 8);
@@ -78,6 +119,7 @@ Outcome check(const ClaimContext& ctx) {
                               {"u", exact::to_string(std::get<2>(c))},
                               {"S", exact_matrix(S_of(c))}};
   }
+  attach_proof(outcome, run_proof(ctx, proof_plan(ctx)));
   return outcome;
 }
 

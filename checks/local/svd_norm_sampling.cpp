@@ -1,4 +1,4 @@
-#include "theory/local/svd_norm_sampling.hpp"
+#include "checks/local/svd_norm_sampling.hpp"
 
 #include <algorithm>
 #include <cmath>

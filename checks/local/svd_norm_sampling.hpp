@@ -1,4 +1,5 @@
 #pragma once
+// A brute-force reference for the exact decider of theory/local/svd_norm_goodness.hpp (tests only).
 // Def 2.2.2 for the SVD homotopy A_s(t) = R_{tα}((1−t)I + tD)R_{tβ} (thesis Def 2.2.4), which is not
 // polynomial in t: ‖A_s(t)v‖² = ‖((1−t)I + tD) R_{tβ} v‖² (R_{tα} is orthogonal and drops out, so α does
 // not matter) is sampled on a grid of directions v = (cos φ, sin φ) and times t, in double precision.

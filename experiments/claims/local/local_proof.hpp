@@ -1,0 +1,83 @@
+#pragma once
+// How a local claim is proved for all reals (issue 10): its sentences, decided by QEPCAD B and Z3
+// (experiments/proofs), the lemmas that reduce them (research FINDINGS §2: L1–L12), the polynomial identities
+// the method rests on (checked by exact polynomial arithmetic), and for a non-empty sentence a counterexample
+// shrunk to small rationals and re-verified by the suite's own exact evaluators.
+#include "experiments/claims/context.hpp"
+#include "experiments/claims/local/goodness_formulas.hpp"
+#include "experiments/claims/outcome.hpp"
+#include "experiments/proofs/decide_sentence.hpp"
+#include "experiments/proofs/witness.hpp"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace affinterp::claims::local {
+
+/// ∃ variables: body, named and explained.
+proofs::Sentence sentence(std::string name, std::string meaning, std::vector<std::string> variables, Formula body);
+
+/// "<base>cond-not-prop.<level>": ∃ variables: domain ∧ condition ∧ ¬property.
+proofs::Sentence cond_not_prop(const std::string& base, const std::string& level,
+                               const std::vector<std::string>& variables, const Formula& domain,
+                               const Formula& condition, const Formula& property);
+/// "<base>prop-not-cond.<level>": ∃ variables: domain ∧ ¬condition ∧ property.
+proofs::Sentence prop_not_cond(const std::string& base, const std::string& level,
+                               const std::vector<std::string>& variables, const Formula& domain,
+                               const Formula& condition, const Formula& property);
+
+/// The lemmas of the research that are sentences themselves, for every quadratic f = 1 + c1 t + c2 t².
+proofs::Sentence lemma_L1();       ///< monotone as written ⇔ f′ of one sign on [0, 1]
+proofs::Sentence lemma_L2();       ///< f′ affine: f′ of one sign on [0, 1] ⇔ read at t = 0, 1
+proofs::Sentence lemma_L2_area();  ///< (f > 0 on [0, 1] ∧ monotone) ⇔ (f(1) > 0 ∧ endpoint-monotone)
+proofs::Sentence lemma_L3();       ///< g affine with slope ≥ 0 takes both strict signs ⇔ g(0) < 0 < g(1)
+
+/// A proof's plan: what it is about, how it reads, and what it decides and checks.
+struct ProofPlan {
+  std::string scope;                        ///< the domain, in words
+  std::string method;                       ///< encoding levels and lemmas
+  std::vector<proofs::Sentence> sentences;  ///< in the order the method reads them
+  /// Identities the method rests on: name → (lhs − rhs), which must be the zero polynomial.
+  std::vector<std::pair<std::string, Polynomial>> identities;
+};
+
+/// A plan carried out: the proof as claims.json records it, and each sentence's decision (for witnesses).
+struct ProofRun {
+  Proof proof;
+  std::map<std::string, proofs::SentenceDecision> decisions;
+  nlohmann::json identities;  ///< name → "zero polynomial"
+
+  /// Every sentence decided by QEPCAD and Z3 alike.
+  bool decided_by_two() const { return proof.decided_by_two(); }
+  /// The agreed result of the named sentence.
+  std::string result(const std::string& name) const;
+};
+
+/// Checks the identities (throws std::logic_error naming one that fails), decides every sentence with both
+/// deciders (files in ctx.proof_files(); 60 s per decider at the quick size, 300 s at the full; throws when the
+/// deciders disagree) and assembles the proof.
+ProofRun run_proof(const ClaimContext& ctx, const ProofPlan& plan);
+
+/// A point of the named non-empty sentence's set: the deciders' sample point (or, when they printed none, the
+/// first of `simple_points` where `exact` holds), shrunk to small rationals while `exact` (the suite's own
+/// evaluators on the quantifier-free statement) holds; `simple_points` are tried first. nullopt when the
+/// sentence is not non-empty or no point is found.
+std::optional<logic::Point> counterexample(const ProofRun& run, const std::string& name, const proofs::Predicate& exact,
+                                           const std::vector<logic::Point>& simple_points = {});
+
+/// A point as claims.json writes exact values: variable → "p/q".
+nlohmann::json exact_point(const logic::Point& p);
+
+/// Attaches the proof. A confirmed verdict whose sentences two deciders decided becomes Strength::proved, and
+/// a non-empty sentence then contradicts it (throws std::runtime_error naming it: the check fails loudly);
+/// refuted and corrected verdicts keep an exact counterexample as their strength, with the proof attached.
+void attach_proof(Outcome& outcome, ProofRun run);
+
+/// Throws std::runtime_error when the verdict the proof reaches (when it reaches one) differs from the
+/// grid's: the check then fails loudly instead of reporting two lines of evidence that disagree.
+void require_agreement(const Outcome& outcome, const std::optional<Verdict>& proved);
+
+}  // namespace affinterp::claims::local
