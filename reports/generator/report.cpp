@@ -64,10 +64,17 @@ std::string figure_link(const json& figures) {
   return link;
 }
 
-/// How strong a verdict is, in the words of the report's "Strength" list.
-std::string strength_words(const std::string& strength) {
+/// How strong a claim's verdict is, in the words of the report's "Strength" list.
+std::string strength_words(const json& claim) {
+  const std::string strength = claim.value("strength", "unstated");
   if (strength == "proved") return "proved for all reals";
-  if (strength == "exact-counterexample") return "exact counterexample";
+  if (strength == "exact-counterexample") {
+    const json proof = claim.value("proof", json());
+    if (!proof.is_object() || proof.value("checked_by", json::array()).size() < 2) return "exact counterexample";
+    std::string deciders;
+    for (const auto& d : proof["checked_by"]) deciders += (deciders.empty() ? "" : ", ") + d.get<std::string>();
+    return "exact counterexample; rest proved (" + deciders + ")";
+  }
   if (strength == "grid") return "grid only";
   if (strength == "sample") return "sample only";
   if (strength == "measured") return "measured";
@@ -100,7 +107,7 @@ void write_summary_table(std::ostringstream& md, const json& claims) {
   for (const auto& c : claims) {
     const std::string id = c["id"];
     md << "| [`" << id << "`](#" << anchor(id) << ") | " << cell(c["statement"]) << " | **"
-       << c["verdict"].get<std::string>() << "** | " << strength_words(c.value("strength", "unstated")) << " | "
+       << c["verdict"].get<std::string>() << "** | " << strength_words(c) << " | "
        << cell(one_line_evidence(c["evidence"])) << " | " << figure_link(c["figures"]) << " |\n";
   }
 }
@@ -271,8 +278,10 @@ std::string render_markdown(const json& doc) {
         "- **proved for all reals**: the claim (and its correction, if any) is a first-order sentence over the "
         "reals decided by two independent deciders (QEPCAD B and Z3), or a polynomial identity checked by two "
         "independent checkers; the sentence files are in `proofs/` and rerun with the tool alone.\n"
-        "- **exact counterexample**: the printed claim fails at an exact (rational) point anyone can re-verify; a "
-        "correction, if any, is checked on a grid or sample only.\n"
+        "- **exact counterexample**: the printed claim fails at an exact (rational) point anyone can re-verify. "
+        "With \"rest proved\", the claim's proof section decides for all reals, by the deciders named, the "
+        "sentences that fail as printed and those that hold (the correction, or what holds instead); otherwise "
+        "a correction is checked on a grid or sample only.\n"
         "- **grid only** / **sample only**: checked on the stated grid or random sample (size, seed and "
         "tolerance in the evidence), not proved.\n"
         "- **measured**: a measured figure, with its 95% bootstrap interval over repeated runs.\n";
