@@ -1,0 +1,13 @@
+; kaji.er.positive-definite printed.nonzero-B-with-ER-le-0
+(set-logic QF_NRA)
+(declare-const a11 Real)
+(declare-const a12 Real)
+(declare-const a21 Real)
+(declare-const a22 Real)
+(declare-const b11 Real)
+(declare-const b12 Real)
+(declare-const b21 Real)
+(declare-const b22 Real)
+(assert (and (> (+ (* a11 a11) (* a12 a12) (* a21 a21) (* a22 a22)) 0) (or (not (= b11 0)) (not (= b12 0)) (not (= b21 0)) (not (= b22 0))) (<= (+ (* (- 2) a11 a12 b11 b12) (* (- 2) a11 a12 b21 b22) (* (- 2) a11 a22 b11 b22) (* 2 a11 a22 b12 b21) (* a11 a11 b12 b12) (* a11 a11 b22 b22) (* 2 a12 a21 b11 b22) (* (- 2) a12 a21 b12 b21) (* a12 a12 b11 b11) (* a12 a12 b21 b21) (* (- 2) a21 a22 b11 b12) (* (- 2) a21 a22 b21 b22) (* a21 a21 b12 b12) (* a21 a21 b22 b22) (* a22 a22 b11 b11) (* a22 a22 b21 b21)) 0)))
+(check-sat)
+(get-model)

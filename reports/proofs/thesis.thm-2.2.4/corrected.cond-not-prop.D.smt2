@@ -1,0 +1,11 @@
+; thesis.thm-2.2.4 corrected.cond-not-prop.D
+(set-logic QF_NRA)
+(declare-const x Real)
+(declare-const y Real)
+(declare-const h Real)
+(declare-const t Real)
+(declare-const t1 Real)
+(declare-const t2 Real)
+(assert (and (> x 0) (> y 0) (> (+ (* (- 1) h h) (* x y)) 0) (or (and (<= (+ (* (- 2) h h) (* (- 1) x) (* 2 x y) (* (- 1) y)) 0) (<= (+ (- 2) x y) 0)) (and (<= (+ 2 (* (- 1) x) (* (- 1) y)) 0) (<= (+ (* 2 h h) x (* (- 2) x y) y) 0))) (or (and (>= t 0) (<= (+ (- 1) t) 0) (<= (+ 1 (* (- 1) h h t t) (* (- 2) t) (* t x) (* t y) (* t t) (* (- 1) t t x) (* t t x y) (* (- 1) t t y)) 0)) (and (>= t1 0) (<= (+ (- 1) t1) 0) (< (+ (- 2) (* (- 2) h h t1) (* 2 t1) (* (- 2) t1 x) (* 2 t1 x y) (* (- 2) t1 y) x y) 0) (>= t2 0) (<= (+ (- 1) t2) 0) (> (+ (- 2) (* (- 2) h h t2) (* 2 t2) (* (- 2) t2 x) (* 2 t2 x y) (* (- 2) t2 y) x y) 0)))))
+(check-sat)
+(get-model)

@@ -1,0 +1,12 @@
+; thesis.thm-2.2.6 polar-good-svd-not.D
+(set-logic NRA)
+(declare-const x Real)
+(declare-const y Real)
+(declare-const c Real)
+(declare-const s Real)
+(declare-const t Real)
+(declare-const t1 Real)
+(declare-const t2 Real)
+(assert (forall ((t3 Real) (t4 Real) (t5 Real)) (and (> x 0) (> y 0) (= (+ (- 1) (* c c) (* s s)) 0) (or (and (>= t 0) (<= (+ (- 1) t) 0) (<= (+ 1 (* (- 2) t) (* t x) (* t y) (* t t) (* (- 1) t t x) (* t t x y) (* (- 1) t t y)) 0)) (and (>= t1 0) (<= (+ (- 1) t1) 0) (< (+ (- 2) (* 2 t1) (* (- 2) t1 x) (* 2 t1 x y) (* (- 2) t1 y) x y) 0) (>= t2 0) (<= (+ (- 1) t2) 0) (> (+ (- 2) (* 2 t2) (* (- 2) t2 x) (* 2 t2 x y) (* (- 2) t2 y) x y) 0))) (or (< t3 0) (> (+ (- 1) t3) 0) (> (+ 1 (* 2 c c s s t3 t3 x y) (* c c t3 x) (* c c t3 y) (* (- 1) c c t3 t3 x) (* (- 1) c c t3 t3 y) (* c c c c t3 t3 x y) (* s s t3 x) (* s s t3 y) (* (- 1) s s t3 t3 x) (* (- 1) s s t3 t3 y) (* s s s s t3 t3 x y) (* (- 2) t3) (* t3 t3)) 0)) (or (< t4 0) (> (+ (- 1) t4) 0) (>= (+ (- 2) (* 4 c c s s t4 x y) (* (- 2) c c t4 x) (* (- 2) c c t4 y) (* c c x) (* c c y) (* 2 c c c c t4 x y) (* (- 2) s s t4 x) (* (- 2) s s t4 y) (* s s x) (* s s y) (* 2 s s s s t4 x y) (* 2 t4)) 0) (< t5 0) (> (+ (- 1) t5) 0) (<= (+ (- 2) (* 4 c c s s t5 x y) (* (- 2) c c t5 x) (* (- 2) c c t5 y) (* c c x) (* c c y) (* 2 c c c c t5 x y) (* (- 2) s s t5 x) (* (- 2) s s t5 y) (* s s x) (* s s y) (* 2 s s s s t5 x y) (* 2 t5)) 0)))))
+(check-sat)
+(get-model)

@@ -1,0 +1,12 @@
+; thesis.thm-2.2.6 svd-good-polar-not.D
+(set-logic NRA)
+(declare-const x Real)
+(declare-const y Real)
+(declare-const c Real)
+(declare-const s Real)
+(declare-const t3 Real)
+(declare-const t4 Real)
+(declare-const t5 Real)
+(assert (forall ((t Real) (t1 Real) (t2 Real)) (and (> x 0) (> y 0) (= (+ (- 1) (* c c) (* s s)) 0) (or (< t 0) (> (+ (- 1) t) 0) (> (+ 1 (* (- 2) t) (* t x) (* t y) (* t t) (* (- 1) t t x) (* t t x y) (* (- 1) t t y)) 0)) (or (< t1 0) (> (+ (- 1) t1) 0) (>= (+ (- 2) (* 2 t1) (* (- 2) t1 x) (* 2 t1 x y) (* (- 2) t1 y) x y) 0) (< t2 0) (> (+ (- 1) t2) 0) (<= (+ (- 2) (* 2 t2) (* (- 2) t2 x) (* 2 t2 x y) (* (- 2) t2 y) x y) 0)) (or (and (>= t3 0) (<= (+ (- 1) t3) 0) (<= (+ 1 (* 2 c c s s t3 t3 x y) (* c c t3 x) (* c c t3 y) (* (- 1) c c t3 t3 x) (* (- 1) c c t3 t3 y) (* c c c c t3 t3 x y) (* s s t3 x) (* s s t3 y) (* (- 1) s s t3 t3 x) (* (- 1) s s t3 t3 y) (* s s s s t3 t3 x y) (* (- 2) t3) (* t3 t3)) 0)) (and (>= t4 0) (<= (+ (- 1) t4) 0) (< (+ (- 2) (* 4 c c s s t4 x y) (* (- 2) c c t4 x) (* (- 2) c c t4 y) (* c c x) (* c c y) (* 2 c c c c t4 x y) (* (- 2) s s t4 x) (* (- 2) s s t4 y) (* s s x) (* s s y) (* 2 s s s s t4 x y) (* 2 t4)) 0) (>= t5 0) (<= (+ (- 1) t5) 0) (> (+ (- 2) (* 4 c c s s t5 x y) (* (- 2) c c t5 x) (* (- 2) c c t5 y) (* c c x) (* c c y) (* 2 c c c c t5 x y) (* (- 2) s s t5 x) (* (- 2) s s t5 y) (* s s x) (* s s y) (* 2 s s s s t5 x y) (* 2 t5)) 0))))))
+(check-sat)
+(get-model)

@@ -1,0 +1,11 @@
+; thesis.viete entries.p-positive
+(set-logic QF_NRA)
+(declare-const a Real)
+(declare-const b Real)
+(declare-const c Real)
+(declare-const d Real)
+(declare-const e Real)
+(declare-const f Real)
+(assert (> (+ (* (/ 1 3) a b) (* (/ 1 3) a c) (* (- (/ 1 3)) a a) (* (/ 1 3) b c) (* (- (/ 1 3)) b b) (* (- (/ 1 3)) c c) (* (- 1) d d) (* (- 1) e e) (* (- 1) f f)) 0))
+(check-sat)
+(get-model)
