@@ -1,4 +1,5 @@
-// The limits deciders run under: a wall-clock limit that ends the whole process group, a missing program.
+// The limits deciders run under: a CPU-time limit, a wall-clock limit that ends the whole process group, a
+// missing program.
 #include "experiments/proofs/subprocess.hpp"
 
 #include <gtest/gtest.h>
@@ -18,6 +19,18 @@ TEST(RunProcess, WallLimitKillsTheProcessGroup) {
   EXPECT_TRUE(r.timed_out);
   EXPECT_LT(r.seconds, 5);
   EXPECT_EQ(r.output.find("never"), std::string::npos);
+}
+
+TEST(RunProcess, CpuLimitEndsABusyDeciderWhateverTheWallClockAllows) {
+  const ProcessResult r = run_process({"sh", "-c", "while :; do :; done"}, {}, {.wall_seconds = 120, .cpu_seconds = 1});
+  EXPECT_TRUE(r.timed_out);
+  EXPECT_LT(r.seconds, 60);
+}
+
+TEST(RunProcess, CpuLimitSparesAnIdleWait) {
+  const ProcessResult r = run_process({"sh", "-c", "sleep 2; echo done"}, {}, {.wall_seconds = 30, .cpu_seconds = 1});
+  EXPECT_FALSE(r.timed_out);
+  EXPECT_EQ(r.output, "done\n");
 }
 
 TEST(RunProcess, MissingProgram) {

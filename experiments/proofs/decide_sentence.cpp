@@ -41,43 +41,51 @@ class ScratchFolder {
   fs::path path_;
 };
 
+/// The child-process limits of one decider run; `grace` seconds are added to the wall-clock limit.
+ProcessLimits process_limits(const DeciderLimits& limits, double grace) {
+  return {.wall_seconds = limits.seconds * limits.wall_factor + grace,
+          .cpu_seconds = limits.seconds,
+          .address_space_bytes = limits.address_space_bytes};
+}
+
 /// The output kept beside the input: timings removed, and a last line when the wall limit stopped the tool.
 std::string kept_output(const ProcessResult& r, const DeciderLimits& limits) {
   std::string out = without_timings(r.output);
   if (r.timed_out) {
     std::ostringstream note;
-    note << "# stopped at the wall-clock limit of " << limits.seconds << " s\n";
+    note << "# stopped at the limit of " << limits.seconds << " s of CPU time (or "
+         << limits.seconds * limits.wall_factor << " s of wall-clock time)\n";
     out += note.str();
   }
   return out;
 }
 
 DeciderRun run_qepcad(const fs::path& input, const std::vector<std::string>& variables, const DeciderLimits& limits) {
-  const ProcessResult r = run_process({"qepcad", "+N" + std::to_string(limits.qepcad_cells), "-noecho"}, input,
-                                      {limits.seconds, limits.address_space_bytes});
+  const ProcessResult r =
+      run_process({"qepcad", "+N" + std::to_string(limits.qepcad_cells), "-noecho"}, input, process_limits(limits, 0));
   write_text(input.string() + ".out", kept_output(r, limits));
   DeciderRun run{"qepcad", "", {}, r.seconds};
   if (r.not_found)
     run.answer.reason = "qepcad: not installed (Debian package qepcad)";
   else if (r.timed_out)
-    run.answer.reason = "qepcad: no answer within the wall-clock limit";
+    run.answer.reason = "qepcad: no answer within the time limit";
   else
     run.answer = parse_qepcad(r.output, variables);
   return run;
 }
 
 DeciderRun run_z3(const fs::path& input, const DeciderLimits& limits) {
-  const int seconds = std::max(1, static_cast<int>(std::floor(limits.seconds)));
-  // z3's own limits end it cleanly; the wall limit, a little later, is the backstop.
+  const int wall = std::max(1, static_cast<int>(std::floor(limits.seconds * limits.wall_factor)));
+  // z3's own wall-clock limit ends it cleanly; the process limits, a little later, are the backstop.
   const ProcessResult r = run_process(
-      {"z3", "-T:" + std::to_string(seconds), "-memory:" + std::to_string(limits.z3_megabytes), input.string()}, {},
-      {limits.seconds + 2, limits.address_space_bytes});
+      {"z3", "-T:" + std::to_string(wall), "-memory:" + std::to_string(limits.z3_megabytes), input.string()}, {},
+      process_limits(limits, 2));
   write_text(input.string() + ".out", kept_output(r, limits));
   DeciderRun run{"z3", "", {}, r.seconds};
   if (r.not_found)
     run.answer.reason = "z3: not installed (Debian package z3)";
   else if (r.timed_out)
-    run.answer.reason = "z3: no answer within the wall-clock limit";
+    run.answer.reason = "z3: no answer within the time limit";
   else
     run.answer = parse_z3(r.output);
   return run;

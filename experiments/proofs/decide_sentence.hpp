@@ -23,7 +23,11 @@ struct Sentence {
 };
 
 struct DeciderLimits {
-  double seconds = 60;                                        ///< wall-clock limit of each decider
+  /// Each decider's limit in CPU seconds, so that whether a sentence is decided does not depend on the load.
+  double seconds = 60;
+  /// The wall-clock limit, as a multiple of `seconds`: a backstop for proofs; `decide` uses 1, so that its
+  /// answer comes within the time it states.
+  double wall_factor = 4;
   std::size_t address_space_bytes = std::size_t{1536} << 20;  ///< RLIMIT_AS of each decider
   long qepcad_cells = 100'000'000;                            ///< QEPCAD's +N (garbage-collected space)
   long z3_megabytes = 1024;                                   ///< z3 -memory:

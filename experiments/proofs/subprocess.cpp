@@ -9,6 +9,7 @@
 
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
@@ -29,7 +30,11 @@ constexpr int exec_failed = 127;
   const rlim_t cap = limits.address_space_bytes;
   const rlimit as{cap, cap};
   setrlimit(RLIMIT_AS, &as);
-  [[maybe_unused]] const int niceness = nice(10);  // deciders yield to the suite's own threads
+  if (limits.cpu_seconds > 0) {  // SIGXCPU at the soft limit, SIGKILL a second later
+    const auto soft = static_cast<rlim_t>(std::ceil(limits.cpu_seconds));
+    const rlimit cpu{soft, soft + 1};
+    setrlimit(RLIMIT_CPU, &cpu);
+  }
   const int in = open(input, O_RDONLY);
   if (in < 0) _exit(exec_failed + 1);
   dup2(in, STDIN_FILENO);
@@ -106,6 +111,7 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::files
   killpg(pid, SIGKILL);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  if (WIFSIGNALED(status) && (WTERMSIG(status) == SIGXCPU || WTERMSIG(status) == SIGKILL)) result.timed_out = true;
   result.not_found = !result.timed_out && WIFEXITED(status) && WEXITSTATUS(status) == exec_failed;
   return result;
 }

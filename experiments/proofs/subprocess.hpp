@@ -1,7 +1,7 @@
 #pragma once
 // Runs a decider as a child process under limits, so that no sentence can hang the suite or take the
-// machine's memory: a wall-clock limit (the whole process group is killed), an address-space cap
-// (RLIMIT_AS), and a lowered priority.
+// machine's memory: a CPU-time limit (RLIMIT_CPU: whether a decider finishes does not depend on the machine's
+// load), a wall-clock limit (the whole process group is killed) and an address-space cap (RLIMIT_AS).
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -10,13 +10,14 @@ namespace affinterp::proofs {
 
 struct ProcessLimits {
   double wall_seconds = 60;
+  double cpu_seconds = 0;                                     ///< RLIMIT_CPU, rounded up; 0: none
   std::size_t address_space_bytes = std::size_t{1536} << 20;  ///< 1.5 GB
 };
 
 struct ProcessResult {
   std::string output;      ///< standard output and standard error, interleaved
   int exit_status = 0;     ///< the exit status, or 128 + signal number
-  bool timed_out = false;  ///< killed at the wall limit
+  bool timed_out = false;  ///< killed at the wall-clock or the CPU-time limit
   bool not_found = false;  ///< the program could not be started
   double seconds = 0;      ///< wall time
 };

@@ -19,23 +19,8 @@ Polynomial integer_multiple(const Polynomial& p) {
   return p * Polynomial(Rational(lcm));
 }
 
-std::string_view qepcad_relation(Relation r) {
-  switch (r) {
-    case Relation::less:
-      return "<";
-    case Relation::less_equal:
-      return "<=";
-    case Relation::greater:
-      return ">";
-    case Relation::greater_equal:
-      return ">=";
-    case Relation::equal:
-      return "=";
-    case Relation::not_equal:
-      return "/=";
-  }
-  return "?";
-}
+/// QEPCAD B writes ≠ as "/="; every other relation as the decide grammar does.
+std::string_view qepcad_relation(Relation r) { return r == Relation::not_equal ? "/=" : symbol(r); }
 
 std::string matrix_text(const Formula& f) {
   using K = Formula::Kind;
@@ -76,7 +61,8 @@ std::string qepcad_polynomial(const Polynomial& p) {
     std::string body = (magnitude != 1 || m.empty()) ? exact::to_string(magnitude) : "";
     for (const auto& [name, e] : m) {
       if (!body.empty()) body += " ";
-      body += name + (e > 1 ? "^" + std::to_string(e) : "");
+      body += name;
+      if (e > 1) body.append("^").append(std::to_string(e));
     }
     text += body;
   }

@@ -92,7 +92,7 @@ void run(const DecideOptions& options) {
   } catch (const std::invalid_argument& e) {
     throw CommandFailed(std::string("bad condition: ") + e.what(), usage_error);
   }
-  const ConditionVerdict v = decide_condition(cell, condition, {.seconds = options.timeout});
+  const ConditionVerdict v = decide_condition(cell, condition, {.seconds = options.timeout, .wall_factor = 1});
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (options.json)
     print_json(cell, v, std::round(seconds * 100) / 100);

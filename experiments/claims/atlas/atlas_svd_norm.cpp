@@ -25,8 +25,8 @@ const ClaimDeclaration claim{{
 //   G is affine in B with slope ≤ 0; at the largest admissible B* = 4π(1+σ+π)/((σ²−4π)(2+σ)²), G equals
 //   4π(1−t)C/(2+σ)² (identity) with C ≥ 0 on [0, 1]; the cases π < 0, π = 0 and x = y separately. Every chain
 //   sentence is decided by both deciders.
-// Sizes: the sentences are the same at every size; the suite has no exact decider for this cell (its
-//   svd_norm_sampling samples directions).
+// Sizes: the sentences are the same at every size. No second line against theory/local: its exact SVD-norm
+//   decider (svd_norm_goodness.hpp) is this very condition, so comparing them could not fail.
 
 using logic::Formula;
 using logic::Polynomial;
