@@ -1,4 +1,5 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/confirmed_by_proof.hpp"
 #include "experiments/claims/origin/ginac_values.hpp"
 #include "experiments/claims/origin/rational_origins.hpp"
 #include "experiments/claims/origin/section_2_3_proof.hpp"
@@ -82,18 +83,10 @@ Outcome check(const ClaimContext& ctx) {
       {"mismatches at random origins", random_mismatches},
   };
   out.proof = proof(ctx);
-  const bool proved = proofs::proves(*out.proof);
   if (symbolic_equal && random_mismatches == 0) {
     out.verdict = Verdict::confirmed;
     out.summary = "the printed min E2(o, o) equals the exact minimum as a rational function of (x, y)";
-    if (proved) {
-      out.strength = Strength::proved;
-      out.summary += "; proved for every origin (identities and sentences, each by two independent checkers)";
-    }
-    if (proofs::contradicted(*out.proof)) {
-      out.verdict = Verdict::inconclusive;
-      out.summary = "a part of the proof fails although the exact comparison agreed: " + out.summary;
-    }
+    weigh_confirmation_against_proof(out, "every origin");
   } else {
     out.verdict = Verdict::refuted;
     out.summary = "the printed min E2(o, o) differs from the exact minimum " + formula(computed);

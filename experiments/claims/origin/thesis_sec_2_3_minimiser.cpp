@@ -1,4 +1,5 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/confirmed_by_proof.hpp"
 #include "experiments/claims/origin/ginac_values.hpp"
 #include "experiments/claims/origin/rational_origins.hpp"
 #include "experiments/claims/origin/section_2_3_proof.hpp"
@@ -111,7 +112,6 @@ Outcome check(const ClaimContext& ctx) {
       {"coordinate mismatches at random origins", random_mismatches},
   };
   out.proof = proof(ctx);
-  const bool proved = proofs::proves(*out.proof);
   if (first_wrong.empty() && random_mismatches == 0) {
     out.verdict = Verdict::confirmed;
     out.summary =
@@ -119,14 +119,7 @@ Outcome check(const ClaimContext& ctx) {
         "(x, y) (v2 = (" +
         computed["v2x"].get<std::string>() + ", " + computed["v2y"].get<std::string>() + "), v3 = (" +
         computed["v3x"].get<std::string>() + ", " + computed["v3y"].get<std::string>() + ") whatever the origin)";
-    if (proved) {
-      out.strength = Strength::proved;
-      out.summary += "; proved for every origin (identities and sentences, each by two independent checkers)";
-    }
-    if (proofs::contradicted(*out.proof)) {
-      out.verdict = Verdict::inconclusive;
-      out.summary = "a part of the proof fails although the exact comparison agreed: " + out.summary;
-    }
+    weigh_confirmation_against_proof(out, "every origin");
   } else {
     out.verdict = Verdict::refuted;
     out.summary = "the printed " + (first_wrong.empty() ? std::string("minimiser") : first_wrong) +

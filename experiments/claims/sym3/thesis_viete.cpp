@@ -1,4 +1,5 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/confirmed_by_proof.hpp"
 #include "experiments/claims/sym3/exact_spectrum.hpp"
 #include "experiments/claims/values.hpp"
 #include "experiments/inputs/sym3/families.hpp"
@@ -256,14 +257,7 @@ Outcome check(const ClaimContext& ctx) {
         std::to_string(total) +
         " rational matrices including double and triple "
         "eigenvalues";
-    if (proofs::proves(*out.proof)) {
-      out.strength = Strength::proved;
-      out.summary += "; proved for every real symmetric S (identities and sentences, each by two independent checkers)";
-    }
-    if (proofs::contradicted(*out.proof)) {
-      out.verdict = Verdict::inconclusive;
-      out.summary = "a part of the proof fails although the exact comparison agreed: " + out.summary;
-    }
+    weigh_confirmation_against_proof(out, "every real symmetric S");
   } else {
     out.verdict = Verdict::refuted;
     out.summary = "the printed Viète formula misses the eigenvalues on " + std::to_string(failures) + " of " +
