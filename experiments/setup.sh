@@ -14,7 +14,7 @@ packages=(
   libcgal-dev libcgal-demo libxsimd-dev
   libginac-dev ginac-tools
   libflint-arb-dev
-  qepcad z3 libz3-dev
+  qepcad z3 libz3-dev cvc5 libssl-dev
   clang libclang-rt-14-dev clang-format
 )
 missing=()

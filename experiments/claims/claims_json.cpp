@@ -25,10 +25,13 @@ nlohmann::json proof_json(const std::optional<Proof>& proof) {
                          {"result", s.result},
                          {"file", s.runs.empty() ? "" : s.runs.front().file},
                          {"seconds", s.runs.empty() ? 0.0 : s.runs.front().seconds},
+                         {"structural", s.structural},
                          {"runs", runs}});
   }
-  return {
+  nlohmann::json out = {
       {"scope", proof->scope}, {"method", proof->method}, {"checked_by", proof->checked_by}, {"sentences", sentences}};
+  if (!proof->cites.empty()) out["cites"] = proof->cites;
+  return out;
 }
 
 std::string utc_now() {

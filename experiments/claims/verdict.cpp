@@ -30,9 +30,11 @@ std::optional<Verdict> parse_verdict(std::string_view text) {
 }
 
 namespace {
-constexpr std::array<std::pair<Strength, std::string_view>, 6> strength_names{{
+constexpr std::array<std::pair<Strength, std::string_view>, 8> strength_names{{
     {Strength::unstated, "unstated"},
     {Strength::proved, "proved"},
+    {Strength::proved_one_decider, "proved-one-decider"},
+    {Strength::proved_citing, "proved-citing"},
     {Strength::exact_counterexample, "exact-counterexample"},
     {Strength::grid, "grid"},
     {Strength::sample, "sample"},

@@ -76,9 +76,7 @@ ConditionVerdict decide_condition(const AtlasCell& cell, const Formula& conditio
     answer.sides.push_back(d);
     if (d.disagreement) {
       answer.verdict = ConditionVerdict::Verdict::unknown;
-      answer.reason = std::string("the deciders disagree on ") + side.name + " (qepcad " +
-                      std::string(to_string(d.runs[0].answer.result)) + ", z3 " +
-                      std::string(to_string(d.runs[1].answer.result)) + ")";
+      answer.reason = "the deciders disagree on " + d.answers();
       return answer;
     }
     all_empty = all_empty && d.result == SetResult::empty;

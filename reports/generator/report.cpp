@@ -67,13 +67,19 @@ std::string figure_link(const json& figures) {
 /// How strong a claim's verdict is, in the words of the report's "Strength" list.
 std::string strength_words(const json& claim) {
   const std::string strength = claim.value("strength", "unstated");
+  const json proof = claim.value("proof", json());
+  const auto checkers = [&] {
+    std::string names;
+    for (const auto& d : proof.value("checked_by", json::array()))
+      names += (names.empty() ? "" : ", ") + d.get<std::string>();
+    return names;
+  };
   if (strength == "proved") return "proved for all reals";
+  if (strength == "proved-one-decider") return "proved, one decider (" + checkers() + ")";
+  if (strength == "proved-citing") return "proved, citing " + proof.value("cites", std::string("?"));
   if (strength == "exact-counterexample") {
-    const json proof = claim.value("proof", json());
     if (!proof.is_object() || proof.value("checked_by", json::array()).size() < 2) return "exact counterexample";
-    std::string deciders;
-    for (const auto& d : proof["checked_by"]) deciders += (deciders.empty() ? "" : ", ") + d.get<std::string>();
-    return "exact counterexample; rest proved (" + deciders + ")";
+    return "exact counterexample; rest proved (" + checkers() + ")";
   }
   if (strength == "grid") return "grid only";
   if (strength == "sample") return "sample only";
@@ -86,19 +92,33 @@ void write_proof(std::ostringstream& md, const json& proof) {
   md << "**Proof for all reals.** Scope: " << proof.value("scope", "") << ". Method: " << proof.value("method", "")
      << ". Decided by";
   for (const auto& tool : proof["checked_by"]) md << " " << tool.get<std::string>();
-  md << ".\n\n| sentence | meaning | result | runs |\n|---|---|---|---|\n";
+  md << ".\n\n| sentence | meaning | result | each checker: its answer (transcript), the time it took |\n"
+        "|---|---|---|---|\n";
+  bool any_structural = false;
   for (const auto& s : proof["sentences"]) {
     std::string runs;
     for (const auto& r : s["runs"]) {
+      // A decider's transcript is <sentence>.<tool>.out beside its input (experiments/proofs/transcript.hpp).
+      const std::string tool = r.value("tool", ""), file = r.value("file", "");
+      const bool decider = tool == "qepcad" || tool == "z3" || tool == "cvc5";
       std::ostringstream one;
       one.precision(2);
-      one << std::fixed << r.value("tool", "") << ": [" << r.value("result", "") << "](" << r.value("file", "") << ") "
-          << r.value("seconds", 0.0) << " s";
+      one << std::fixed << "[" << tool << "](" << file << "): [" << r.value("result", "") << "](";
+      if (decider)
+        one << file.substr(0, file.rfind('/') + 1) << s.value("name", "") << "." << tool << ".out";
+      else
+        one << file;
+      one << ") " << r.value("seconds", 0.0) << " s";
       runs += (runs.empty() ? "" : "; ") + one.str();
     }
+    const bool structural = s.value("structural", false);
+    any_structural = any_structural || structural;
     md << "| " << cell(s.value("name", "")) << " | " << cell(s.value("meaning", "")) << " | " << s.value("result", "")
-       << " | " << cell(runs) << " |\n";
+       << (structural ? " (structural)" : "") << " | " << cell(runs) << " |\n";
   }
+  if (any_structural)
+    md << "\n*Structural*: empty for propositional reasons alone (every polynomial atom replaced by a boolean, "
+          "the sentence stays unsatisfiable), so no evidence for the claim; its weight rests on the lemmas.\n";
   md << "\n";
 }
 
@@ -275,9 +295,16 @@ std::string render_markdown(const json& doc) {
         "- **inconclusive**: not decided; the finding says why.\n"
         "- **pending**: no check implemented yet.\n\n"
         "## Strength\n\n"
-        "- **proved for all reals**: the claim (and its correction, if any) is a first-order sentence over the "
-        "reals decided by two independent deciders (QEPCAD B and Z3), or a polynomial identity checked by two "
-        "independent checkers; the sentence files are in `proofs/` and rerun with the tool alone.\n"
+        "- **proved for all reals**: the claim (and its correction, if any) reduces, by the lemmas written out in "
+        "`proofs/LEMMAS.md`, to first-order sentences over the reals each answered by two independent deciders "
+        "(of QEPCAD B, Z3 and cvc5) and polynomial identities each checked by two independent checkers (GiNaC, an "
+        "exact degree grid); a transcript with an error or a warning answers nothing. The sentence files and "
+        "each decider's transcript are in `proofs/` and rerun with the tool alone.\n"
+        "- **proved, one decider (name)**: as above, but some sentence was answered by the named decider only.\n"
+        "- **proved, citing (theorem)**: as above, with an external published theorem as a step (full reference "
+        "given).\n"
+        "- Sentences marked **structural** are empty for propositional reasons alone and count as no evidence; "
+        "a proof of structural sentences only proves nothing.\n"
         "- **exact counterexample**: the printed claim fails at an exact (rational) point anyone can re-verify. "
         "With \"rest proved\", the claim's proof section decides for all reals, by the deciders named, the "
         "sentences that fail as printed and those that hold (the correction, or what holds instead); otherwise "

@@ -1,5 +1,6 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
+#include "experiments/proofs/citations.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
@@ -36,6 +37,7 @@ Outcome check(const ClaimContext& ctx) {
                                    !logic::greater(cell.macros.at("det"), 0))},
       .z3_only = {},
       .identities = {},
+      .cites = std::string(proofs::citations::exponential),
   };
   return atlas_outcome(ctx, cell, proof, {{"x", "y", 0, 4, {{"h", Rational(1, 2)}}, "h = 1/2"}});
 }

@@ -1,5 +1,6 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
+#include "experiments/proofs/citations.hpp"
 #include "experiments/proofs/goodness_levels.hpp"
 
 namespace affinterp::claims::atlas {
@@ -57,6 +58,7 @@ Outcome check(const ClaimContext& ctx) {
                         !condition && property)},
       .z3_only = {},
       .identities = {},
+      .cites = std::string(proofs::citations::dines),
   };
   return atlas_outcome(ctx, cell, proof,
                        {{"a", "d", -1, 3, {{"b", Rational(1, 4)}, {"c", Rational(1, 4)}}, "b = c = 1/4"}});

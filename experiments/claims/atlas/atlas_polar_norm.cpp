@@ -1,5 +1,6 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
+#include "experiments/proofs/citations.hpp"
 #include "experiments/proofs/goodness_levels.hpp"
 
 namespace affinterp::claims::atlas {
@@ -40,6 +41,7 @@ Outcome check(const ClaimContext& ctx) {
                     prop_not_cond(cell, "N", proofs::norm_level_N(S, "nu"))},
       .z3_only = {},
       .identities = {},
+      .cites = std::string(proofs::citations::dines),
   };
   return atlas_outcome(ctx, cell, proof, {{"x", "y", 0, 4, {{"h", Rational(1, 2)}}, "h = 1/2"}});
 }

@@ -32,6 +32,8 @@ struct AtlasProof {
   std::vector<std::string> z3_only;
   /// Identities the method rests on, checked by exact polynomial arithmetic: name → (lhs − rhs) which must be 0.
   std::vector<std::pair<std::string, logic::Polynomial>> identities;
+  /// An external published theorem the method uses as a step (experiments/proofs/citations.hpp); empty: none.
+  std::string cites{};
 };
 
 /// Decides the proof's sentences and assembles the outcome: confirmed and proved when every sentence is empty

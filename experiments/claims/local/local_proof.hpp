@@ -6,6 +6,7 @@
 #include "experiments/claims/context.hpp"
 #include "experiments/claims/local/goodness_formulas.hpp"
 #include "experiments/claims/outcome.hpp"
+#include "experiments/claims/proof_strength.hpp"
 #include "experiments/proofs/decide_sentence.hpp"
 #include "experiments/proofs/witness.hpp"
 
@@ -42,6 +43,8 @@ struct ProofPlan {
   std::vector<proofs::Sentence> sentences;  ///< in the order the method reads them
   /// Identities the method rests on: name → (lhs − rhs), which must be the zero polynomial.
   std::vector<std::pair<std::string, Polynomial>> identities;
+  /// An external published theorem the method uses as a step (experiments/proofs/citations.hpp); empty: none.
+  std::string cites{};
 };
 
 /// A plan carried out: the proof as claims.json records it, and each sentence's decision (for witnesses).
@@ -50,8 +53,8 @@ struct ProofRun {
   std::map<std::string, proofs::SentenceDecision> decisions;
   nlohmann::json identities;  ///< name → "zero polynomial"
 
-  /// Every sentence decided by QEPCAD and Z3 alike.
-  bool decided_by_two() const { return proof.decided_by_two(); }
+  /// Every sentence decided, by one decider at least and with no other answering otherwise.
+  bool decided() const { return proof.decided(); }
   /// The agreed result of the named sentence.
   std::string result(const std::string& name) const;
 };
@@ -71,9 +74,10 @@ std::optional<logic::Point> counterexample(const ProofRun& run, const std::strin
 /// A point as claims.json writes exact values: variable → "p/q".
 nlohmann::json exact_point(const logic::Point& p);
 
-/// Attaches the proof. A confirmed verdict whose sentences two deciders decided becomes Strength::proved, and
-/// a non-empty sentence then contradicts it (throws std::runtime_error naming it: the check fails loudly);
-/// refuted and corrected verdicts keep an exact counterexample as their strength, with the proof attached.
+/// Attaches the proof. A confirmed verdict whose sentences were decided takes the proof's strength
+/// (proof_strength: proved, one decider, citing), and a non-empty sentence then contradicts it (throws
+/// std::runtime_error naming it: the check fails loudly); refuted and corrected verdicts keep an exact counterexample
+/// as their strength, with the proof attached.
 void attach_proof(Outcome& outcome, ProofRun run);
 
 /// Throws std::runtime_error when the verdict the proof reaches (when it reaches one) differs from the

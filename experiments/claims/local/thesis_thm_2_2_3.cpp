@@ -90,7 +90,7 @@ std::string angle_name(int k, int m) {
 }
 
 /// The proof: the printed condition against Def 2.2.2 for A_s(t) (Lemma L9), for all real x, y > 0 and β.
-ProofPlan proof_plan(const ClaimContext& ctx) {
+ProofPlan proof_plan() {
   const Polynomial x = var("x"), y = var("y"), beta = var("beta"), zero(0);
   const Formula domain = logic::greater(x, 0) && logic::greater(y, 0), condition = thm_2_2_3_formula(x, y);
   ProofPlan plan{
@@ -99,10 +99,8 @@ ProofPlan proof_plan(const ClaimContext& ctx) {
       "G(t) = 4(x-1)(y-1)(1+t(x-1))(1+t(y-1)) - beta^2 t^2 (x-y)^2 (2+t(x+y-2))^2 >= 0 for all t in [0, 1] (level "
       "G). printed.cond-not-prop.G non-empty refutes the printed condition; printed.prop-not-cond.inst (the "
       "property's instance t = 1, a weakening) empty shows the property implies it; at beta = 0 both directions "
-      "empty: the printed condition is exact there (the thesis's proof drops R_{t beta})" +
-          std::string(ctx.size == Size::full
-                          ? "; beta = 0 also at level D of Def 2.2.2 for (1-t)I + tD, without Lemma L9 (Lemma L1)"
-                          : ""),
+      "empty: the printed condition is exact there (the thesis's proof drops R_{t beta}); beta = 0 also at level D of "
+      "Def 2.2.2 for (1-t)I + tD, without Lemma L9 (Lemma L1)",
       {cond_not_prop("printed.", "G", {"x", "y", "beta"}, domain, condition, svd_norm_property(x, y, beta)),
        sentence("printed.prop-not-cond.inst",
                 "x, y > 0, beta where G(1) >= 0 (implied by the property) and the printed condition fails",
@@ -111,11 +109,9 @@ ProofPlan proof_plan(const ClaimContext& ctx) {
        cond_not_prop("beta0.", "G", {"x", "y"}, domain, condition, svd_norm_property(x, y, zero)),
        prop_not_cond("beta0.", "G", {"x", "y"}, domain, condition, svd_norm_property(x, y, zero))},
       {}};
-  if (ctx.size == Size::full) {
-    const PolyMat2 D{{{x, zero}, {zero, y}}};
-    plan.sentences.push_back(cond_not_prop("beta0.", "D", {"x", "y"}, domain, condition, norm_property(D, "D")));
-    plan.sentences.push_back(prop_not_cond("beta0.", "D", {"x", "y"}, domain, condition, norm_property(D, "D")));
-  }
+  const PolyMat2 D{{{x, zero}, {zero, y}}};
+  plan.sentences.push_back(cond_not_prop("beta0.", "D", {"x", "y"}, domain, condition, norm_property(D, "D")));
+  plan.sentences.push_back(prop_not_cond("beta0.", "D", {"x", "y"}, domain, condition, norm_property(D, "D")));
   return plan;
 }
 
@@ -236,8 +232,8 @@ Outcome check(const ClaimContext& ctx) {
     outcome.summary =
         std::to_string(tally.property_only.count) + " cases fail the printed condition but are good for norm";
   }
-  ProofRun proof = run_proof(ctx, proof_plan(ctx));
-  if (proof.decided_by_two()) {
+  ProofRun proof = run_proof(ctx, proof_plan());
+  if (proof.decided()) {
     const bool printed_exact =
         proof.result("printed.cond-not-prop.G") == "empty" && proof.result("printed.prop-not-cond.inst") == "empty";
     require_agreement(outcome, printed_exact ? Verdict::confirmed : Verdict::refuted);

@@ -83,7 +83,7 @@ Outcome check(const ClaimContext& ctx) {
                               {"witness", area_witness(S_of(c))}};
   }
   const AreaParameters parameters = polar_parameters();
-  ProofRun proof = run_proof(ctx, area_theorem_plan(ctx, parameters));
+  ProofRun proof = run_proof(ctx, area_theorem_plan(parameters));
   require_agreement(outcome, area_proof_verdict(proof));
   if (printed.disagreements() > 0) outcome.counterexample["from_proof"] = area_proof_counterexample(proof, parameters);
   attach_proof(outcome, std::move(proof));
