@@ -22,14 +22,16 @@ namespace {
 using GiNaC::ex;
 using GiNaC::matrix;
 
-/// One symbol per name, created in a fixed order (GiNaC orders terms by creation), so the scripts print alike.
+/// The names of every symbol of the identities.
+const char* const names[] = {"t",  "a",  "b",  "c", "d",   "b11", "b12",  "b21", "b22", "v1",
+                             "v2", "co", "si", "x", "y",   "h",   "beta", "phi", "sg",  "pi",
+                             "B",  "l1", "l2", "E", "u11", "u12", "u21",  "u22"};
+
+/// One symbol per name, shared by every identity and by the parser of the committed scripts.
 const GiNaC::symbol& sym(const std::string& name) {
   static const std::map<std::string, GiNaC::symbol> table = [] {
     std::map<std::string, GiNaC::symbol> t;
-    for (const char* n :
-         {"t",    "a",   "b",  "c",  "d", "b11", "b12", "b21", "b22", "v1", "v2",  "co",  "si",  "x",   "y", "h",
-          "beta", "phi", "sg", "pi", "B", "l1",  "l2",  "E",   "w1",  "w2", "u11", "u12", "u21", "u22", "z"})
-      t.emplace(n, GiNaC::symbol(n));
+    for (const char* n : names) t.emplace(n, GiNaC::symbol(n));
     return t;
   }();
   return table.at(name);
@@ -228,10 +230,7 @@ std::vector<ex> entries(const ex& side) {
 /// The committed script's sides, `is(normal((lhs)-(rhs))==0);` per line, read with GiNaC's parser.
 std::vector<std::pair<ex, ex>> sides_of(const std::string& script) {
   GiNaC::symtab table;
-  for (const char* n :
-       {"t",    "a",   "b",  "c",  "d", "b11", "b12", "b21", "b22", "v1", "v2",  "co",  "si",  "x",   "y", "h",
-        "beta", "phi", "sg", "pi", "B", "l1",  "l2",  "E",   "w1",  "w2", "u11", "u12", "u21", "u22", "z"})
-    table[n] = sym(n);
+  for (const char* n : names) table[n] = sym(n);
   GiNaC::parser parse(table, /*strict=*/true);
   std::vector<std::pair<ex, ex>> sides;
   const std::string open = "is(normal((", middle = ")-(", close = "))==0);";
