@@ -13,7 +13,7 @@ using logic::Polynomial;
 
 /// The sentence as the deciders get it. For the linear norm, b = s − k and c = s + k (symmetric and skew
 /// parts) with the variable order (a, d, s, k): QEPCAD then finishes in seconds where it runs out of cells in
-/// any order of a, b, c, d (research FINDINGS §6).
+/// any order of a, b, c, d.
 struct Encoding {
   Formula formula;
   std::vector<std::string> variables, qepcad_order;

@@ -1,5 +1,5 @@
 #pragma once
-// Defs 2.2.1 and 2.2.2 as first-order formulas at the encoding levels of the research (FINDINGS §2), for
+// Defs 2.2.1 and 2.2.2 as first-order formulas at the encoding levels of reports/proofs/LEMMAS.md, for
 // A(t) = U(t)((1−t)I + tB)V(t) with U, V leaving det and ‖·‖ alone (Lemma L5):
 //   area, level D (Lemma L1): det A(t) > 0 on [0, 1] and its t-derivative ≥ 0 on [0, 1] or ≤ 0 on [0, 1];
 //   area, level E (Lemmas L1, L2): det B > 0 and the derivative's values at t = 0, 1 (tr B − 2, 2 det B − tr B)

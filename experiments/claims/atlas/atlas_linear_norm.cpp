@@ -19,7 +19,7 @@ const ClaimDeclaration claim{{
 }};
 
 // Reading: Def 2.2.2 for ‖((1−t)I + tA)v‖.
-// Method: in a, b, c, d neither decider finishes (research FINDINGS §8), so first Lemma L7: conjugating A by a
+// Method: in a, b, c, d neither decider finishes within its limits, so first Lemma L7: conjugating A by a
 //   rotation O changes neither notion ((1−t)I + tOᵀAO = Oᵀ((1−t)I + tA)O, and v ↦ Ov is a bijection of the
 //   circle) nor the condition (sym and AᵀA are conjugated alike, and congruence keeps ⪰); the rotation that
 //   diagonalises sym(A) brings A to [[p, −k], [k, r]] (p, r the eigenvalues of sym(A), k = (c − b)/2; the skew

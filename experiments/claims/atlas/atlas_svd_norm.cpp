@@ -17,7 +17,7 @@ const ClaimDeclaration claim{{
 }};
 
 // Reading: Def 2.2.2 for ‖A_s(t)v‖; R_{tα} is orthogonal (Lemma L5) but R_{tβ} on the right is not removable.
-// Method: Lemma L9 (analytic, proved by hand in the research): with G(t) = 4(x−1)(y−1)(1 + t(x−1))(1 + t(y−1))
+// Method: Lemma L9 (by hand, reports/proofs/LEMMAS.md): with G(t) = 4(x−1)(y−1)(1 + t(x−1))(1 + t(y−1))
 //   − β²t²(x−y)²(2 + t(x+y−2))², good for norm ⇔ G(t) ≥ 0 for all t ∈ [0, 1]; the condition is G(1) ≥ 0.
 //   Property ⇒ condition is the instance t = 1 (one sentence). Condition ⇒ property (Lemma L12, worst time
 //   t = 1) in σ = x + y − 2, π = (x−1)(y−1), B = β² (an identity turns G into these): Z3 decides it directly
@@ -68,8 +68,9 @@ Outcome check(const ClaimContext& ctx) {
   const AtlasProof proof{
       .scope = cell.domain_words,
       .method =
-          "Lemma L9 (by hand): good for norm iff G(t) = 4(x-1)(y-1)(1+t(x-1))(1+t(y-1)) - beta^2 t^2 (x-y)^2 "
-          "(2+t(x+y-2))^2 >= 0 for all t in [0, 1]; the condition is G(1) >= 0 (identity). Property => condition: "
+          "Lemma L9 (by hand, reports/proofs/LEMMAS.md): good for norm iff G(t) = 4(x-1)(y-1)(1+t(x-1))(1+t(y-1)) - "
+          "beta^2 t^2 (x-y)^2 (2+t(x+y-2))^2 >= 0 for all t in [0, 1]; the condition is G(1) >= 0 (identity). Property "
+          "=> condition: "
           "the instance t = 1 (prop-not-cond.inst). Condition => property (Lemma L12, worst time t = 1), in "
           "sg = x+y-2, pi = (x-1)(y-1), B = beta^2 (identity): decided directly by Z3 (cond-not-prop.sym; QEPCAD "
           "exhausts its prime list there), and by both deciders through L12's chain: G is affine in B with slope "

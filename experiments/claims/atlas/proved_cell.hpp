@@ -25,7 +25,7 @@ struct Slice {
 
 struct AtlasProof {
   std::string scope;   ///< the domain, in words
-  std::string method;  ///< encoding levels and lemmas (research FINDINGS §2)
+  std::string method;  ///< encoding levels and lemmas (reports/proofs/LEMMAS.md)
   std::vector<proofs::Sentence> sentences;
   /// A sentence of these names may be decided by Z3 alone: QEPCAD decides the same direction through the
   /// lemma sentences the method names instead (svd norm, Lemma L12).

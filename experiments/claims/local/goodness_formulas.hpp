@@ -4,7 +4,7 @@
 // Every polynomial is built from the homotopy itself, A(t) = U(t)((1−t)I + tB)V(t) with rotations U, V that
 // leave det and ‖·‖ alone (Lemma L5): det((1−t)I + tB) and ‖((1−t)I + tB)v‖², the same formulas that
 // theory/local/goodness.hpp decides exactly at rational points. A property is written at one encoding level
-// of the research (FINDINGS §2), each step a lemma:
+// (reports/proofs/LEMMAS.md), each step a lemma:
 //   L  as written: monotone = ∀ 0 ≤ s ≤ t ≤ 1: f(s) ≤ f(t) (or ≥); unit v, v1² + v2² = 1
 //   D  monotone ⇔ f′ ≥ 0 on [0, 1] or f′ ≤ 0 on [0, 1]                                         (L1)
 //   E  f′ affine in t: its sign on [0, 1] read at t = 0 and t = 1                              (L2, L3)

@@ -1,6 +1,6 @@
 #pragma once
 // How a local claim is proved for all reals (issue 10): its sentences, decided by QEPCAD B and Z3
-// (experiments/proofs), the lemmas that reduce them (research FINDINGS §2: L1–L12), the polynomial identities
+// (experiments/proofs), the lemmas that reduce them (L1–L13, reports/proofs/LEMMAS.md), the polynomial identities
 // the method rests on (checked by exact polynomial arithmetic), and for a non-empty sentence a counterexample
 // shrunk to small rationals and re-verified by the suite's own exact evaluators.
 #include "experiments/claims/context.hpp"
@@ -30,7 +30,7 @@ proofs::Sentence prop_not_cond(const std::string& base, const std::string& level
                                const std::vector<std::string>& variables, const Formula& domain,
                                const Formula& condition, const Formula& property);
 
-/// The lemmas of the research that are sentences themselves, for every quadratic f = 1 + c1 t + c2 t².
+/// The lemmas (reports/proofs/LEMMAS.md) that are sentences themselves, for every quadratic f = 1 + c1 t + c2 t².
 proofs::Sentence lemma_L1();       ///< monotone as written ⇔ f′ of one sign on [0, 1]
 proofs::Sentence lemma_L2();       ///< f′ affine: f′ of one sign on [0, 1] ⇔ read at t = 0, 1
 proofs::Sentence lemma_L2_area();  ///< (f > 0 on [0, 1] ∧ monotone) ⇔ (f(1) > 0 ∧ endpoint-monotone)

@@ -33,7 +33,7 @@ const ClaimDeclaration claim{{
 // Reading: A_s(t) = R_{tα}((1−t)I + tD)R_{tβ} is built from a given SVD (x, y, α, β), x, y > 0, α, β ∈ [0, 2π) as
 //   in the thesis, and the condition is on x, y only. |A_s(t)v| = |((1−t)I + tD)R_{tβ}v|: α drops out, β does not,
 //   and the proof's formula for |A_s(t)v|² omits R_{tβ}.
-// Method: proof for all reals (issue 10): by Lemma L9 (analytic; research FINDINGS §2) A_s is good for norm iff
+// Method: proof for all reals (issue 10): by Lemma L9 (reports/proofs/LEMMAS.md) A_s is good for norm iff
 //   G(t) ≥ 0 on [0, 1] (level G). Sentences in x, y, β decided by QEPCAD B and Z3: printed condition ∧ ¬G-level
 //   property (non-empty: its point, shrunk and re-verified, is the counterexample), ¬condition ∧ G(1) ≥ 0 (the
 //   property's instance t = 1: empty, so the property implies the condition), and both directions at β = 0 (empty:
@@ -95,7 +95,7 @@ ProofPlan proof_plan() {
   const Formula domain = logic::greater(x, 0) && logic::greater(y, 0), condition = thm_2_2_3_formula(x, y);
   ProofPlan plan{
       "D = diag(x, y) with x, y > 0 and the right angle beta real (radians; alpha plays no part)",
-      "Lemma L9 (analytic, research FINDINGS §2): A_s(t) = R_{t alpha}((1-t)I + tD)R_{t beta} is good for norm iff "
+      "Lemma L9 (by hand, reports/proofs/LEMMAS.md): A_s(t) = R_{t alpha}((1-t)I + tD)R_{t beta} is good for norm iff "
       "G(t) = 4(x-1)(y-1)(1+t(x-1))(1+t(y-1)) - beta^2 t^2 (x-y)^2 (2+t(x+y-2))^2 >= 0 for all t in [0, 1] (level "
       "G). printed.cond-not-prop.G non-empty refutes the printed condition; printed.prop-not-cond.inst (the "
       "property's instance t = 1, a weakening) empty shows the property implies it; at beta = 0 both directions "
