@@ -38,17 +38,21 @@ nlohmann::json interval_json(const std::optional<Interval>& ci) {
   return ci ? nlohmann::json{ci->lo, ci->hi} : nlohmann::json();
 }
 
+/// The words of `text` in lower case joined by '-', without trademark signs: "Intel(R) Xeon(R) Processor" →
+/// "intel-xeon-processor".
 std::string slug(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    if (std::isalnum(static_cast<unsigned char>(c)))
-      out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    else if (!out.empty() && out.back() != '-')
-      out += '-';
+  std::string out, word;
+  for (std::size_t i = 0; i <= text.size(); ++i) {
+    if (i < text.size() && std::isalnum(static_cast<unsigned char>(text[i]))) {
+      word += static_cast<char>(std::tolower(static_cast<unsigned char>(text[i])));
+      continue;
+    }
+    if (!word.empty() && word != "r" && word != "tm") {
+      if (!out.empty()) out += '-';
+      out += word;
+    }
+    word.clear();
   }
-  // "Intel(R) Xeon(R) Processor" → "intel-r-xeon-r-processor" → without the trademark signs.
-  for (std::size_t at; (at = out.find("-r-")) != std::string::npos;) out.replace(at, 3, "-");
-  while (!out.empty() && out.back() == '-') out.pop_back();
   return out.empty() ? "unknown" : out;
 }
 

@@ -43,9 +43,15 @@ Outcome inconclusive(std::string summary, const std::string& method) {
 std::string vector_isa(const nlohmann::json& machine) {
   const nlohmann::json flags = machine.value("cpu_flags", nlohmann::json());
   if (!flags.is_string()) return "CPU flags not recorded";
-  const std::string list = " " + flags.get<std::string>() + " ";
-  for (const char* isa : {"avx512f", "avx2", "avx", "sse4_2"})
-    if (list.find(std::string(" ") + isa + " ") != std::string::npos) return isa;
+  std::string list = " ";  // each flag between spaces
+  list += flags.get<std::string>();
+  list += ' ';
+  for (const char* isa : {"avx512f", "avx2", "avx", "sse4_2"}) {
+    std::string flag = " ";
+    flag += isa;
+    flag += ' ';
+    if (list.find(flag) != std::string::npos) return isa;
+  }
   return "no AVX";
 }
 
