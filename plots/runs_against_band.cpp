@@ -43,12 +43,14 @@ std::vector<std::string> draw_runs_against_band(const std::filesystem::path& ste
       low = std::isfinite(low) ? std::min(low, lo) : lo;
       high = std::isfinite(high) ? std::max(high, hi) : hi;
     }
+    if (std::isfinite(panel.band_lo)) high = std::max(high, panel.band_lo);  // the band's finite edges in view
+    if (std::isfinite(panel.band_hi)) low = std::min(low, panel.band_hi);
     std::string name = "p";
     name += std::to_string(p);
     figure.data(name, points);
     const double margin = 0.15 * std::max(high - low, 1e-9);
     script << "unset object\nset object 1 rect from graph 0, " << edge(panel.band_lo, "0") << " to graph 1, "
-           << edge(panel.band_hi, "1") << " behind fc rgb '#009e73'\n"
+           << edge(panel.band_hi, "1") << " behind fc rgb '#009e73' fs transparent solid 0.25 noborder\n"
            << "set title " << gnuplot_string(panel.title) << " noenhanced\nset ylabel " << gnuplot_string(panel.unit)
            << "\nset yrange [" << low - margin << ":" << high + margin
            << "]\nset xrange [-0.5:" << (panel.runs.empty() ? 0.5 : static_cast<double>(panel.runs.size()) - 0.5)
