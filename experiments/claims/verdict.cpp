@@ -6,7 +6,7 @@
 namespace affinterp::claims {
 
 namespace {
-constexpr std::array<std::pair<Verdict, std::string_view>, 7> names{{
+constexpr std::array<std::pair<Verdict, std::string_view>, 8> names{{
     {Verdict::pending, "pending"},
     {Verdict::confirmed, "confirmed"},
     {Verdict::refuted, "refuted"},
@@ -14,6 +14,7 @@ constexpr std::array<std::pair<Verdict, std::string_view>, 7> names{{
     {Verdict::reproduced, "reproduced"},
     {Verdict::not_reproduced, "not-reproduced"},
     {Verdict::inconclusive, "inconclusive"},
+    {Verdict::machine_dependent, "machine-dependent"},
 }};
 }  // namespace
 

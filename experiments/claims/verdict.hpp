@@ -7,13 +7,14 @@
 namespace affinterp::claims {
 
 enum class Verdict {
-  pending,         ///< no check implemented yet
-  confirmed,       ///< holds on everything tried (exact proof-by-computation, or a stated sweep)
-  refuted,         ///< fails; a re-verifiable counterexample is attached
-  corrected,       ///< fails as printed, holds after the stated correction
-  reproduced,      ///< a measured figure (speed-up, error level) matches the paper's
-  not_reproduced,  ///< a measured figure does not match the paper's
-  inconclusive,    ///< could not be decided; the summary says why and what would decide it
+  pending,            ///< no check implemented yet
+  confirmed,          ///< holds on everything tried (exact proof-by-computation, or a stated sweep)
+  refuted,            ///< fails; a re-verifiable counterexample is attached
+  corrected,          ///< fails as printed, holds after the stated correction
+  reproduced,         ///< a measured figure (speed-up, error level) matches the paper's
+  not_reproduced,     ///< a measured figure does not match the paper's
+  inconclusive,       ///< could not be decided; the summary says why and what would decide it
+  machine_dependent,  ///< a measured figure reproduced on one recorded machine and not on another (issue 21)
 };
 
 std::string_view to_string(Verdict v);

@@ -202,9 +202,11 @@ void write_engine_speed(std::ostringstream& md, const json& speed) {
     md << "Not measured: `reports/bench/bench_interp.json` is absent (run `experiments/reproduce.sh`).\n\n";
     return;
   }
-  md << "`build/bin/bench_interp` on " << speed.value("mesh", "?") << " (" << fixed(speed.value("triangles", json()), 0)
-     << " triangles), single-threaded, the median of ten runs of at least a second each with its 95% bootstrap "
-        "interval (10,000 resamples, seed 2015; experiments/claims/measured.hpp): a target is met when the whole "
+  md << "The latest run: `build/bin/bench_interp` on " << speed.value("mesh", "?") << " ("
+     << fixed(speed.value("triangles", json()), 0)
+     << " triangles), single-threaded, the median of ten repetitions of at least a second each in each of the run's "
+        "whole processes, with its 95% bootstrap interval over processes and repetitions (10,000 resamples, seed "
+        "2015; experiments/bench/measured.hpp): a target is met when the whole "
         "interval meets it, missed when none of it does, and undecided otherwise; machine: "
      << cell(speed.value("machine", "?")) << "; " << cell(speed.value("compiler", "?"))
      << ". Targets: E^F ≥ 150 frames/s, E^R ≥ 25 frames/s after set-up, "
@@ -229,6 +231,24 @@ void write_engine_speed(std::ostringstream& md, const json& speed) {
        << " |\n";
   }
   md << "\n";
+  const json history = speed.value("history", json());
+  if (!history.is_object() || history["rows"].empty()) return;
+  md << "On every recorded run (`bench/history/`; " << cell(history.value("rule", "")) << "):\n\n"
+     << "| run | CPU | cores | energy | frames/s (95% CI) | set-up ms (95% CI) | processes | targets met |\n"
+        "|---|---|---|---|---|---|---|---|\n";
+  const auto with_ci = [](const json& value, const json& ci, int digits) {
+    return fixed(value, digits) + (ci.is_array() ? " (" + fixed(ci[0], digits) + "–" + fixed(ci[1], digits) + ")" : "");
+  };
+  for (const auto& row : history["rows"])
+    md << "| " << row.value("run", "") << (row.value("recorded", true) ? "" : " (not recorded yet)") << " | "
+       << cell(row["cpu"].is_string() ? row["cpu"].get<std::string>() : "?") << " | " << row["cores"].dump() << " | "
+       << row.value("energy", "") << " | " << with_ci(row["frames_per_s"], row["frames_per_s_ci95"], 1) << " | "
+       << with_ci(row["setup_ms"], row["setup_ms_ci95"], 1) << " | " << row["processes"].dump() << " | "
+       << row.value("verdict", "") << " |\n";
+  md << "\nAcross runs:";
+  for (const auto& [energy, verdict] : history["across_runs"].items())
+    md << " E^" << energy << " " << verdict.get<std::string>() << ";";
+  md << "\n\n";
 }
 
 /// How the engine's cost grows with the mesh against the 1M-triangle targets (bench_scale, one run).
@@ -289,9 +309,15 @@ std::string render_markdown(const json& doc) {
         "otherwise a sweep whose size, seed and tolerance are stated).\n"
         "- **refuted**: fails; the counterexample can be re-verified from claims.json alone.\n"
         "- **corrected**: fails as printed, holds after the stated correction.\n"
-        "- **reproduced** / **not-reproduced**: a measured figure compared with the paper's: its 95% bootstrap "
-        "interval over the benchmark's repetitions lies inside / outside the band of values the claim's wording "
-        "allows (stated in the claim's rule); an interval across an edge of the band is inconclusive.\n"
+        "- **reproduced** / **not-reproduced**: a measured figure compared with the paper's, on every recorded run "
+        "of the benchmarks (`bench/history/`, one entry per run, machine named): on each run its 95% bootstrap "
+        "interval over the benchmark's repetitions and processes lies inside / outside the band of values the "
+        "claim's wording allows (stated in the claim's rule; an interval across an edge of the band leaves that run "
+        "inconclusive), and every run says so.\n"
+        "- **machine-dependent**: a measured figure reproduced on one recorded run and not on another: a property "
+        "of the machine, not of the claim; the claim's table lists every run and its plot shows each run's "
+        "interval against the band. Runs that decide and agree while others are undecided leave the claim "
+        "inconclusive.\n"
         "- **inconclusive**: not decided; the finding says why.\n"
         "- **pending**: no check implemented yet.\n\n"
         "## Strength\n\n"
@@ -311,7 +337,8 @@ std::string render_markdown(const json& doc) {
         "a correction is checked on a grid or sample only.\n"
         "- **grid only** / **sample only**: checked on the stated grid or random sample (size, seed and "
         "tolerance in the evidence), not proved.\n"
-        "- **measured**: a measured figure, with its 95% bootstrap interval over repeated runs.\n";
+        "- **measured**: a measured figure, with its 95% bootstrap interval over repeated runs, on each recorded "
+        "machine.\n";
 
   std::string group;
   for (const auto& c : claims) {

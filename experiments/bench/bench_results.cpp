@@ -1,12 +1,13 @@
-#include "experiments/claims/bench_results.hpp"
+#include "experiments/bench/bench_results.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdint>
 #include <fstream>
 #include <stdexcept>
 
-namespace affinterp::claims {
+namespace affinterp::bench {
 
 namespace {
 
@@ -46,10 +47,11 @@ std::optional<BenchResults> read_bench_results(const std::filesystem::path& file
 
   BenchResults results;
   results.file = file;
-  const auto& context = json.value("context", nlohmann::json::object());
+  const auto& context = results.context = json.value("context", nlohmann::json::object());
   results.machine = context.value("affinterp_cpu", "unknown (run a current bench executable)");
   results.compiler = context.value("affinterp_compiler", "unknown");
   results.flags = context.value("affinterp_flags", "unknown");
+  std::map<std::string, std::map<std::int64_t, std::vector<double>>> by_process;
   for (const auto& run : json["benchmarks"]) {
     const std::string name = base_name(run.value("run_name", run.value("name", "")));
     if (run.value("error_occurred", false)) {
@@ -57,14 +59,21 @@ std::optional<BenchResults> read_bench_results(const std::filesystem::path& file
       continue;
     }
     if (!run.contains(counter)) continue;
-    // Repeated benchmarks report aggregates: take the median. A single run is its own median.
-    const bool aggregate = run.value("run_type", "iteration") == "aggregate";
-    if (!aggregate) results.repetitions[name].push_back(run[counter].get<double>());
-    if (aggregate && run.value("aggregate_name", "") != "median") continue;
-    if (!aggregate && results.median.contains(name)) continue;
-    results.median[name] = run[counter].get<double>();
+    const double value = run[counter].get<double>();
+    // Repeated benchmarks report aggregates: take the median; a single run is its own median. The repetitions
+    // themselves, where the file keeps them, decide the median below.
+    if (run.value("run_type", "iteration") == "aggregate") {
+      if (run.value("aggregate_name", "") == "median" && !results.median.contains(name)) results.median[name] = value;
+      continue;
+    }
+    by_process[name][run.value("affinterp_process", std::int64_t{0})].push_back(value);
+  }
+  for (auto& [name, processes] : by_process) {
+    ByProcess& x = results.repetitions[name];
+    for (auto& [index, values] : processes) x.push_back(std::move(values));
+    results.median[name] = bench::median(pooled(x));
   }
   return results;
 }
 
-}  // namespace affinterp::claims
+}  // namespace affinterp::bench
