@@ -1,10 +1,12 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/claim_sentences.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
+AtlasProof proof();
 
 const ClaimDeclaration claim{{
     .id = "atlas.exp-log.area",
@@ -14,6 +16,7 @@ const ClaimDeclaration claim{{
     .strength = Strength::sample,
     .check = check,
 }};
+const SentencesDeclaration sentences{"atlas.exp-log.area", [](const ClaimContext&) { return proof().sentences; }};
 
 // Reading: Def 2.2.1 for det A_E(t) = det S^t.
 // Method: Lemma L10 — S = Q diag(λ1, λ2) Qᵀ, S^t = Q diag(λ1^t, λ2^t) Qᵀ, so det A_E(t) = (λ1λ2)^t =
@@ -22,10 +25,10 @@ const ClaimDeclaration claim{{
 //   empty because the condition is `true`.
 // Sizes: the sentence is the same at every size; the suite has no exact decider for this cell.
 
-Outcome check(const ClaimContext& ctx) {
+AtlasProof proof() {
   using logic::Polynomial;
   const proofs::AtlasCell& cell = proofs::atlas_cell(proofs::Homotopy::exp_log, proofs::Notion::area);
-  const AtlasProof proof{
+  return AtlasProof{
       .scope = cell.domain_words,
       .method =
           "Lemma L10 (exp-log): det A(t) = (det S)^t = exp(t log det S), positive with a derivative of one "
@@ -37,7 +40,11 @@ Outcome check(const ClaimContext& ctx) {
       .z3_only = {},
       .identities = {},
   };
-  return atlas_outcome(ctx, cell, proof, {{"x", "y", 0, 4, {{"h", Rational(1, 2)}}, "h = 1/2"}});
+}
+
+Outcome check(const ClaimContext& ctx) {
+  return atlas_outcome(ctx, proofs::atlas_cell(proofs::Homotopy::exp_log, proofs::Notion::area), proof(),
+                       {{"x", "y", 0, 4, {{"h", Rational(1, 2)}}, "h = 1/2"}});
 }
 
 }  // namespace

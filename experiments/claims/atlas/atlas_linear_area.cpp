@@ -1,11 +1,13 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/claim_sentences.hpp"
 #include "experiments/proofs/goodness_levels.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
+AtlasProof proof();
 
 const ClaimDeclaration claim{{
     .id = "atlas.linear.area",
@@ -16,6 +18,7 @@ const ClaimDeclaration claim{{
     .strength = Strength::sample,
     .check = check,
 }};
+const SentencesDeclaration sentences{"atlas.linear.area", [](const ClaimContext&) { return proof().sentences; }};
 
 // Reading: Def 2.2.1 for det A(t) = det((1−t)I + tA), a quadratic in t with value 1 at t = 0.
 // Method: level E — monotone on [0, 1] iff the derivative has one sign there (Lemma L1); the derivative is
@@ -23,12 +26,12 @@ const ClaimDeclaration claim{{
 //   monotone f with f(0) = 1 is f(1) = det A > 0 (Lemma L2). Two sentences in a, b, c, d.
 // Sizes: the sentences are the same at every size; random points 200 (quick) / 2000 (full).
 
-Outcome check(const ClaimContext& ctx) {
+AtlasProof proof() {
   using logic::Polynomial;
   const proofs::AtlasCell& cell = proofs::atlas_cell(proofs::Homotopy::linear, proofs::Notion::area);
   const proofs::PolyMat2 A{
       {{Polynomial::variable("a"), Polynomial::variable("b")}, {Polynomial::variable("c"), Polynomial::variable("d")}}};
-  const AtlasProof proof{
+  return AtlasProof{
       .scope = cell.domain_words,
       .method =
           "Def 2.2.1 for det((1-t)I + tA) at level E: monotone iff the derivative keeps one sign on [0, 1] "
@@ -38,7 +41,11 @@ Outcome check(const ClaimContext& ctx) {
       .z3_only = {},
       .identities = {},
   };
-  return atlas_outcome(ctx, cell, proof, {{"a", "d", -1, 4, {{"b", 0}, {"c", Rational(1, 2)}}, "b = 0, c = 1/2"}});
+}
+
+Outcome check(const ClaimContext& ctx) {
+  return atlas_outcome(ctx, proofs::atlas_cell(proofs::Homotopy::linear, proofs::Notion::area), proof(),
+                       {{"a", "d", -1, 4, {{"b", 0}, {"c", Rational(1, 2)}}, "b = 0, c = 1/2"}});
 }
 
 }  // namespace

@@ -1,11 +1,13 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/claim_sentences.hpp"
 #include "experiments/proofs/goodness_levels.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
+AtlasProof proof();
 
 const ClaimDeclaration claim{{
     .id = "atlas.linear.norm",
@@ -16,6 +18,7 @@ const ClaimDeclaration claim{{
     .strength = Strength::sample,
     .check = check,
 }};
+const SentencesDeclaration sentences{"atlas.linear.norm", [](const ClaimContext&) { return proof().sentences; }};
 
 // Reading: Def 2.2.2 for ‖((1−t)I + tA)v‖.
 // Method: in a, b, c, d neither decider finishes (research FINDINGS §8), so first Lemma L7: conjugating A by a
@@ -25,7 +28,7 @@ const ClaimDeclaration claim{{
 //   part commutes with rotations). Then level N (Lemmas L3, L4, L6, L8) in p, r, k with ν quantified.
 // Sizes: the sentences are the same at every size; random points 200 (quick) / 2000 (full) in a, b, c, d.
 
-Outcome check(const ClaimContext& ctx) {
+AtlasProof proof() {
   using logic::Polynomial;
   const proofs::AtlasCell& cell = proofs::atlas_cell(proofs::Homotopy::linear, proofs::Notion::norm);
   const Polynomial p = Polynomial::variable("p"), r = Polynomial::variable("r"), k = Polynomial::variable("k");
@@ -39,7 +42,7 @@ Outcome check(const ClaimContext& ctx) {
   const auto sentence = [&](const std::string& name, const std::string& meaning, const logic::Formula& set) {
     return proofs::Sentence{name, meaning, logic::exists({"p", "r", "k"}, domain && set), {}};
   };
-  const AtlasProof proof{
+  return AtlasProof{
       .scope = cell.domain_words,
       .method =
           "Lemma L7: conjugation by a rotation changes neither Def 2.2.2 nor the condition, and brings A to the "
@@ -58,7 +61,10 @@ Outcome check(const ClaimContext& ctx) {
       .z3_only = {},
       .identities = {},
   };
-  return atlas_outcome(ctx, cell, proof,
+}
+
+Outcome check(const ClaimContext& ctx) {
+  return atlas_outcome(ctx, proofs::atlas_cell(proofs::Homotopy::linear, proofs::Notion::norm), proof(),
                        {{"a", "d", -1, 3, {{"b", Rational(1, 4)}, {"c", Rational(1, 4)}}, "b = c = 1/4"}});
 }
 

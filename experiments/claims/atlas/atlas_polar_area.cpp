@@ -1,11 +1,13 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/claim_sentences.hpp"
 #include "experiments/proofs/goodness_levels.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
+AtlasProof proof();
 
 const ClaimDeclaration claim{{
     .id = "atlas.polar.area",
@@ -16,17 +18,18 @@ const ClaimDeclaration claim{{
     .strength = Strength::sample,
     .check = check,
 }};
+const SentencesDeclaration sentences{"atlas.polar.area", [](const ClaimContext&) { return proof().sentences; }};
 
 // Reading: Def 2.2.1; det R_{tθ} = 1 (Lemma L5), so det A_p(t) = det((1−t)I + tS).
 // Method: level E (Lemmas L1, L2, as for atlas.linear.area). Two quantifier-free sentences in x, y, h.
 // Sizes: the sentences are the same at every size; random points 200 (quick) / 2000 (full).
 
-Outcome check(const ClaimContext& ctx) {
+AtlasProof proof() {
   using logic::Polynomial;
   const proofs::AtlasCell& cell = proofs::atlas_cell(proofs::Homotopy::polar, proofs::Notion::area);
   const Polynomial h = Polynomial::variable("h");
   const proofs::PolyMat2 S{{{Polynomial::variable("x"), h}, {h, Polynomial::variable("y")}}};
-  const AtlasProof proof{
+  return AtlasProof{
       .scope = cell.domain_words,
       .method =
           "Def 2.2.1 for det((1-t)I + tS) (the rotation has determinant 1, Lemma L5) at level E: monotone iff "
@@ -37,7 +40,11 @@ Outcome check(const ClaimContext& ctx) {
       .z3_only = {},
       .identities = {},
   };
-  return atlas_outcome(ctx, cell, proof, {{"x", "y", 0, 4, {{"h", Rational(1, 2)}}, "h = 1/2"}});
+}
+
+Outcome check(const ClaimContext& ctx) {
+  return atlas_outcome(ctx, proofs::atlas_cell(proofs::Homotopy::polar, proofs::Notion::area), proof(),
+                       {{"x", "y", 0, 4, {{"h", Rational(1, 2)}}, "h = 1/2"}});
 }
 
 }  // namespace

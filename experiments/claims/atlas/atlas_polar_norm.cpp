@@ -1,11 +1,13 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/claim_sentences.hpp"
 #include "experiments/proofs/goodness_levels.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
+AtlasProof proof();
 
 const ClaimDeclaration claim{{
     .id = "atlas.polar.norm",
@@ -16,6 +18,7 @@ const ClaimDeclaration claim{{
     .strength = Strength::sample,
     .check = check,
 }};
+const SentencesDeclaration sentences{"atlas.polar.norm", [](const ClaimContext&) { return proof().sentences; }};
 
 // Reading: Def 2.2.2; R_{tθ} is orthogonal (Lemma L5), so ‖A_p(t)v‖ = ‖((1−t)I + tS)v‖.
 // Method: level N — ‖·‖ monotone iff its square is (L4); with M = S − I, ½ d/dt‖(I + tM)v‖² = P(v) + t‖Mv‖²,
@@ -24,12 +27,12 @@ const ClaimDeclaration claim{{
 //   with ν quantified.
 // Sizes: the sentences are the same at every size; random points 200 (quick) / 2000 (full).
 
-Outcome check(const ClaimContext& ctx) {
+AtlasProof proof() {
   using logic::Polynomial;
   const proofs::AtlasCell& cell = proofs::atlas_cell(proofs::Homotopy::polar, proofs::Notion::norm);
   const Polynomial h = Polynomial::variable("h");
   const proofs::PolyMat2 S{{{Polynomial::variable("x"), h}, {h, Polynomial::variable("y")}}};
-  const AtlasProof proof{
+  return AtlasProof{
       .scope = cell.domain_words,
       .method =
           "Def 2.2.2 for ((1-t)I + tS)v (the rotation is orthogonal, Lemma L5) at level N: the squared norm "
@@ -41,7 +44,11 @@ Outcome check(const ClaimContext& ctx) {
       .z3_only = {},
       .identities = {},
   };
-  return atlas_outcome(ctx, cell, proof, {{"x", "y", 0, 4, {{"h", Rational(1, 2)}}, "h = 1/2"}});
+}
+
+Outcome check(const ClaimContext& ctx) {
+  return atlas_outcome(ctx, proofs::atlas_cell(proofs::Homotopy::polar, proofs::Notion::norm), proof(),
+                       {{"x", "y", 0, 4, {{"h", Rational(1, 2)}}, "h = 1/2"}});
 }
 
 }  // namespace

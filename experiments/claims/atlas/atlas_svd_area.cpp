@@ -1,11 +1,13 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/claim_sentences.hpp"
 #include "experiments/proofs/goodness_levels.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
+AtlasProof proof();
 
 const ClaimDeclaration claim{{
     .id = "atlas.svd.area",
@@ -16,6 +18,7 @@ const ClaimDeclaration claim{{
     .strength = Strength::sample,
     .check = check,
 }};
+const SentencesDeclaration sentences{"atlas.svd.area", [](const ClaimContext&) { return proof().sentences; }};
 
 // Reading: Def 2.2.1; det R_{tα} = det R_{tβ} = 1 (Lemma L5), so det A_s(t) = det((1−t)I + tD).
 // Method: level E — monotone iff the derivative has one sign on [0, 1] (Lemma L1); it is affine, so its
@@ -23,11 +26,11 @@ const ClaimDeclaration claim{{
 //   Two quantifier-free sentences in x, y.
 // Sizes: the sentences are the same at every size; random points 200 (quick) / 2000 (full).
 
-Outcome check(const ClaimContext& ctx) {
+AtlasProof proof() {
   using logic::Polynomial;
   const proofs::AtlasCell& cell = proofs::atlas_cell(proofs::Homotopy::svd, proofs::Notion::area);
   const proofs::PolyMat2 D{{{Polynomial::variable("x"), Polynomial(0)}, {Polynomial(0), Polynomial::variable("y")}}};
-  const AtlasProof proof{
+  return AtlasProof{
       .scope = cell.domain_words,
       .method =
           "Def 2.2.1 for det((1-t)I + tD) (the rotations have determinant 1, Lemma L5) at level E: monotone iff "
@@ -38,7 +41,11 @@ Outcome check(const ClaimContext& ctx) {
       .z3_only = {},
       .identities = {},
   };
-  return atlas_outcome(ctx, cell, proof, {{"x", "y", 0, 4, {}, "the (x, y) plane"}});
+}
+
+Outcome check(const ClaimContext& ctx) {
+  return atlas_outcome(ctx, proofs::atlas_cell(proofs::Homotopy::svd, proofs::Notion::area), proof(),
+                       {{"x", "y", 0, 4, {}, "the (x, y) plane"}});
 }
 
 }  // namespace

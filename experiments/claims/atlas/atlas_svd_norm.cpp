@@ -1,10 +1,12 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/claim_sentences.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
+AtlasProof proof();
 
 const ClaimDeclaration claim{{
     .id = "atlas.svd.norm",
@@ -15,6 +17,7 @@ const ClaimDeclaration claim{{
     .strength = Strength::sample,
     .check = check,
 }};
+const SentencesDeclaration sentences{"atlas.svd.norm", [](const ClaimContext&) { return proof().sentences; }};
 
 // Reading: Def 2.2.2 for ‖A_s(t)v‖; R_{tα} is orthogonal (Lemma L5) but R_{tβ} on the right is not removable.
 // Method: Lemma L9 (analytic, proved by hand in the research): with G(t) = 4(x−1)(y−1)(1 + t(x−1))(1 + t(y−1))
@@ -33,7 +36,7 @@ using logic::Polynomial;
 
 Formula on_unit_interval(const Polynomial& t) { return logic::greater_equal(t, 0) && logic::less_equal(t, 1); }
 
-Outcome check(const ClaimContext& ctx) {
+AtlasProof proof() {
   const proofs::AtlasCell& cell = proofs::atlas_cell(proofs::Homotopy::svd, proofs::Notion::norm);
   const Polynomial x = Polynomial::variable("x"), y = Polynomial::variable("y"), beta = Polynomial::variable("beta"),
                    t = Polynomial::variable("t"), one(1), two(2), four(4);
@@ -65,7 +68,7 @@ Outcome check(const ClaimContext& ctx) {
   const auto sentence = [](std::string name, std::string meaning, std::vector<std::string> vars, Formula f) {
     return proofs::Sentence{std::move(name), std::move(meaning), logic::exists(std::move(vars), std::move(f)), {}};
   };
-  const AtlasProof proof{
+  return AtlasProof{
       .scope = cell.domain_words,
       .method =
           "Lemma L9 (by hand): good for norm iff G(t) = 4(x-1)(y-1)(1+t(x-1))(1+t(y-1)) - beta^2 t^2 (x-y)^2 "
@@ -106,10 +109,8 @@ Outcome check(const ClaimContext& ctx) {
                                  logic::less(Gs(t, B, Polynomial(exact::Rational(1, 4)) * sg * sg), 0))},
       .z3_only = {"cond-not-prop.sym"},
       .identities =
-          {{"condition-is-G(1): 4xy(x-1)(y-1) - beta^2(x-y)^2(x+y)^2 = G(1)", four * x * y * (x - one) * (y - one) -
-                                                                                  beta * beta * pow(x - y, 2) *
-                                                                                      pow(x + y, 2) -
-                                                                                  G(one)},
+          {{"condition-is-G(1): 4xy(x-1)(y-1) - beta^2(x-y)^2(x+y)^2 = G(1)",
+            four * x * y * (x - one) * (y - one) - beta * beta * pow(x - y, 2) * pow(x + y, 2) - G(one)},
            {"svd-coordinates: G(t) in x, y, beta = G(t) in sg, pi, B", G(t) - svd_coordinates},
            {"L12.C: (1-t)C = (1+t sg+t^2 pi)(2+sg)^2 - t^2(2+t sg)^2(1+sg+pi)",
             (one - t) * C -
@@ -117,11 +118,14 @@ Outcome check(const ClaimContext& ctx) {
            {"L12.G-at-B*: D G(t)|B=N/D = 4 pi (1-t) C (sg^2 - 4 pi), N = 4 pi (1+sg+pi), D = (sg^2-4pi)(2+sg)^2",
             G_at_Bstar_times_D - four * pi * (one - t) * C * (sg * sg - four * pi)}},
   };
+}
+
+Outcome check(const ClaimContext& ctx) {
   std::vector<Slice> slices;
   for (const auto& [b, label] : std::vector<std::pair<Rational, std::string>>{
            {0, "beta = 0"}, {Rational(1, 2), "beta = 1/2"}, {1, "beta = 1"}, {2, "beta = 2"}})
     slices.push_back({"x", "y", 0, 3, {{"beta", b}}, label});
-  return atlas_outcome(ctx, cell, proof, slices);
+  return atlas_outcome(ctx, proofs::atlas_cell(proofs::Homotopy::svd, proofs::Notion::norm), proof(), slices);
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/claim_sentences.hpp"
 #include "experiments/claims/local/local_proof.hpp"
 #include "experiments/claims/local/random_gl_plus.hpp"
 #include "theory/local/local.hpp"
@@ -11,6 +12,7 @@ namespace affinterp::claims::local {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
+ProofPlan proof_plan(const ClaimContext& ctx);
 
 const ClaimDeclaration claim{{
     .id = "kaji.exp.det-monotone",
@@ -21,6 +23,8 @@ const ClaimDeclaration claim{{
     .strength = Strength::grid,
     .check = check,
 }};
+const SentencesDeclaration sentences{"kaji.exp.det-monotone",
+                                     [](const ClaimContext& ctx) { return proof_plan(ctx).sentences; }};
 
 // Reading: "monotone" is strict unless λ1λ2 = 1, where det A^E(t) = 1 for all t.
 // Method: in Real50 on a t grid over [−10, 10]: for det A = 1 (every fourth sample) det A^E(t) must stay 1; otherwise
@@ -44,7 +48,7 @@ Mat2<Real50> random_unimodular(Rng& rng, double max_ratio) {
 }
 
 /// The proof's algebraic residue after Lemma L10.
-ProofPlan proof_plan() {
+ProofPlan proof_plan(const ClaimContext&) {
   const Polynomial c = var("c"), L = var("L"), E = var("E"), E2 = var("E2");
   const auto iff = [](const Formula& a, const Formula& b) { return (a && b) || (!a && !b); };
   const Formula log_sign = iff(logic::greater(L, 0), logic::greater(c, 1)) &&
@@ -108,7 +112,7 @@ Outcome check(const ClaimContext& ctx) {
       holds ? "det A^E(t) is constant 1 when lambda1 lambda2 = 1 and otherwise strictly monotone with derivative "
               "log(lambda1 lambda2)(lambda1 lambda2)^t != 0 at every sampled t (Real50)"
             : "det A^E(t) is not monotone as stated";
-  attach_proof(outcome, run_proof(ctx, proof_plan()));
+  attach_proof(outcome, run_proof(ctx, proof_plan(ctx)));
   return outcome;
 }
 

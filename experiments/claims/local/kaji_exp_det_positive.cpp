@@ -1,4 +1,5 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/claim_sentences.hpp"
 #include "experiments/claims/local/local_proof.hpp"
 #include "experiments/claims/local/random_gl_plus.hpp"
 #include "plots/local/figures.hpp"
@@ -11,6 +12,7 @@ namespace affinterp::claims::local {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
+ProofPlan proof_plan(const ClaimContext& ctx);
 
 const ClaimDeclaration claim{{
     .id = "kaji.exp.det-positive",
@@ -20,6 +22,8 @@ const ClaimDeclaration claim{{
     .strength = Strength::grid,
     .check = check,
 }};
+const SentencesDeclaration sentences{"kaji.exp.det-positive",
+                                     [](const ClaimContext& ctx) { return proof_plan(ctx).sentences; }};
 
 // Reading: "every real t" is sampled on [−10, 10].
 // Method: det A^E(t) = det R_{tθ} det S^t = λ1^t λ2^t = (det A)^t > 0 (Kaji §3). In Real50, det A^E(t) from the
@@ -34,7 +38,7 @@ using affinterp::local::det2;
 using affinterp::local::ExpLogHomotopy;
 
 /// The proof's algebraic residue after Lemma L10.
-ProofPlan proof_plan() {
+ProofPlan proof_plan(const ClaimContext&) {
   const Polynomial x = var("x"), y = var("y"), h = var("h"), l1 = var("l1"), l2 = var("l2");
   const Polynomial det_S = x * y - h * h;
   return {
@@ -81,7 +85,7 @@ Outcome check(const ClaimContext& ctx) {
   outcome.verdict = holds ? Verdict::confirmed : Verdict::refuted;
   outcome.summary = holds ? "det A^E(t) = (det A)^t > 0 at every sampled t in [-10, 10] (Real50)"
                           : "det A^E(t) is not positive somewhere";
-  attach_proof(outcome, run_proof(ctx, proof_plan()));
+  attach_proof(outcome, run_proof(ctx, proof_plan(ctx)));
   if (ctx.draws_figures()) outcome.figures = ctx.figure_refs(plots::draw_kaji_figure_1(ctx.figure_dir));
   return outcome;
 }

@@ -1,4 +1,5 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/claim_sentences.hpp"
 #include "experiments/claims/local/local_proof.hpp"
 #include "experiments/claims/local/quadratic_signs.hpp"
 #include "experiments/claims/local/simple_values.hpp"
@@ -12,6 +13,7 @@ namespace affinterp::claims::local {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
+ProofPlan proof_plan(const ClaimContext& ctx);
 
 const ClaimDeclaration claim{{
     .id = "kaji.polar.degenerate",
@@ -21,6 +23,8 @@ const ClaimDeclaration claim{{
     .strength = Strength::exact_counterexample,
     .check = check,
 }};
+const SentencesDeclaration sentences{"kaji.polar.degenerate",
+                                     [](const ClaimContext& ctx) { return proof_plan(ctx).sentences; }};
 
 // Reading: t ranges over all of ℝ, as in Kaji's homotopies; det A^P(t) = det((1−t)I + tS) (kaji.polar.det), so
 //   only the eigenvalues λ1, λ2 of S matter and S = diag(λ1, λ2) stands for every S.

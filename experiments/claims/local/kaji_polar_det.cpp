@@ -1,4 +1,5 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/claim_sentences.hpp"
 #include "experiments/claims/local/local_proof.hpp"
 #include "experiments/claims/local/simple_values.hpp"
 #include "experiments/support/random.hpp"
@@ -12,6 +13,7 @@ namespace affinterp::claims::local {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
+ProofPlan proof_plan(const ClaimContext& ctx);
 
 const ClaimDeclaration claim{{
     .id = "kaji.polar.det",
@@ -22,6 +24,8 @@ const ClaimDeclaration claim{{
     .strength = Strength::grid,
     .check = check,
 }};
+const SentencesDeclaration sentences{"kaji.polar.det",
+                                     [](const ClaimContext& ctx) { return proof_plan(ctx).sentences; }};
 
 // Reading: λ1, λ2 are the singular values of A, which are the eigenvalues of its polar factor S (AᵀA = S²).
 // Method: det R_{tθ} = 1, so det A^P(t) = det((1−t)I + tS). S = R_uᵀ diag(λ1, λ2) R_u with a rational rotation
@@ -59,7 +63,7 @@ double rotation_det_deviation(std::uint64_t seed, int samples) {
 }
 
 /// The proof: the factorisation for every positive definite S and real t.
-ProofPlan proof_plan() {
+ProofPlan proof_plan(const ClaimContext&) {
   const Polynomial x = var("x"), y = var("y"), h = var("h"), l1 = var("l1"), l2 = var("l2"), t = var("t");
   const Polynomial c = var("c"), s = var("s"), one(1);
   const PolyMat2 S{{{x, h}, {h, y}}}, R = rotation(c, s), RS = product(R, S), SS = product(S, S);
@@ -121,7 +125,7 @@ Outcome check(const ClaimContext& ctx) {
   outcome.summary = holds ? "det((1-t)I + tS) = ((lambda1-1)t+1)((lambda2-1)t+1) as polynomials on all " +
                                 std::to_string(cases) + " exact cases, and det R_{t theta} = 1 (Real50)"
                           : "the printed det A^P(t) differs from the computed one";
-  attach_proof(outcome, run_proof(ctx, proof_plan()));
+  attach_proof(outcome, run_proof(ctx, proof_plan(ctx)));
   return outcome;
 }
 

@@ -1,4 +1,5 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/claim_sentences.hpp"
 #include "experiments/claims/local/local_proof.hpp"
 #include "experiments/claims/local/quadratic_signs.hpp"
 #include "experiments/claims/local/simple_values.hpp"
@@ -12,6 +13,7 @@ namespace affinterp::claims::local {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
+ProofPlan proof_plan(const ClaimContext& ctx);
 
 const ClaimDeclaration claim{{
     .id = "kaji.svd.degenerate",
@@ -21,6 +23,8 @@ const ClaimDeclaration claim{{
     .strength = Strength::grid,
     .check = check,
 }};
+const SentencesDeclaration sentences{"kaji.svd.degenerate",
+                                     [](const ClaimContext& ctx) { return proof_plan(ctx).sentences; }};
 
 // Reading: the SVD homotopy is A_s(t) = R_{tα}((1−t)I + tD)R_{tβ} of thesis Def 2.2.4 (the [ACOL00] variant we
 //   have), t real, and A is not a rotation: for a rotation every homotopy here keeps det = 1.
@@ -36,7 +40,7 @@ using affinterp::local::Quadratic;
 using exact::Real50;
 
 /// The proof: every non-identity D = diag(x, y) ≻ 0 makes det A_s(t) vanish at some real t.
-ProofPlan proof_plan() {
+ProofPlan proof_plan(const ClaimContext&) {
   const Polynomial x = var("x"), y = var("y"), c = var("c"), s = var("s");
   const PolyMat2 D{{{x, Polynomial(0)}, {Polynomial(0), y}}};
   return {
@@ -87,7 +91,7 @@ Outcome check(const ClaimContext& ctx) {
   outcome.summary = holds ? "det A_s(t) = ((x-1)t+1)((y-1)t+1) vanishes at a real t on all " + std::to_string(cases) +
                                 " non-rotation cases; A_s(t0) evaluated in Real50 has |det| <= 1e-40"
                           : "some SVD homotopy never degenerates, or A_s(t0) is not singular";
-  attach_proof(outcome, run_proof(ctx, proof_plan()));
+  attach_proof(outcome, run_proof(ctx, proof_plan(ctx)));
   return outcome;
 }
 

@@ -1,4 +1,5 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/claim_sentences.hpp"
 #include "experiments/claims/local/area_theorem.hpp"
 #include "experiments/claims/local/area_theorem_proof.hpp"
 #include "experiments/claims/local/area_witness.hpp"
@@ -15,6 +16,7 @@ namespace affinterp::claims::local {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
+ProofPlan proof_plan(const ClaimContext& ctx);
 
 const ClaimDeclaration claim{{
     .id = "thesis.thm-2.2.1",
@@ -25,6 +27,8 @@ const ClaimDeclaration claim{{
     .strength = Strength::exact_counterexample,
     .check = check,
 }};
+const SentencesDeclaration sentences{"thesis.thm-2.2.1",
+                                     [](const ClaimContext& ctx) { return proof_plan(ctx).sentences; }};
 
 // Reading: "good for area" (Def 2.2.1) = det A_l(t) weakly monotone and > 0 on [0, 1]; A ranges over GL+(2).
 // Method: proof for all reals (issue 10; area_theorem_proof.hpp): the printed condition and its correction each
@@ -53,6 +57,8 @@ AreaParameters linear_parameters() {
           [A_at](const logic::Point& p) { return det2(A_at(p)) > 0; },
           ""};
 }
+
+ProofPlan proof_plan(const ClaimContext& ctx) { return area_theorem_plan(ctx, linear_parameters()); }
 
 /// The simplest integer matrix (entries in [−2, 2], least Σ|a_ij|) with det > 0 where `condition` holds
 /// and the linear interpolation is not good for area.
@@ -110,7 +116,7 @@ Outcome check(const ClaimContext& ctx) {
                               {"witness", area_witness(shown)}};
   }
   const AreaParameters parameters = linear_parameters();
-  ProofRun proof = run_proof(ctx, area_theorem_plan(ctx, parameters));
+  ProofRun proof = run_proof(ctx, proof_plan(ctx));
   require_agreement(outcome, area_proof_verdict(proof));
   if (printed.disagreements() > 0) outcome.counterexample["from_proof"] = area_proof_counterexample(proof, parameters);
   attach_proof(outcome, std::move(proof));

@@ -1,4 +1,5 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/claim_sentences.hpp"
 #include "experiments/claims/local/area_theorem.hpp"
 #include "experiments/claims/local/area_theorem_proof.hpp"
 #include "experiments/claims/local/area_witness.hpp"
@@ -13,6 +14,7 @@ namespace affinterp::claims::local {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
+ProofPlan proof_plan(const ClaimContext& ctx);
 
 const ClaimDeclaration claim{{
     .id = "thesis.thm-2.2.2",
@@ -22,6 +24,8 @@ const ClaimDeclaration claim{{
     .strength = Strength::exact_counterexample,
     .check = check,
 }};
+const SentencesDeclaration sentences{"thesis.thm-2.2.2",
+                                     [](const ClaimContext& ctx) { return proof_plan(ctx).sentences; }};
 
 // Reading: Def 2.2.1 as for Thm 2.2.1; A_s(t) = R_{tα}((1−t)I + tD)R_{tβ} with D = diag(x, y), and
 //   det A_s(t) = det((1−t)I + tD) for every α, β, so the (x, y) plane decides the theorem.
@@ -44,6 +48,8 @@ AreaParameters svd_parameters() {
           [](const logic::Point& p) { return p.at("x") > 0 && p.at("y") > 0; },
           "det A_s(t) = det R_{t alpha} det((1-t)I + tD) det R_{t beta} and det R = cos^2 + sin^2 = 1 (Lemma L5)"};
 }
+
+ProofPlan proof_plan(const ClaimContext& ctx) { return area_theorem_plan(ctx, svd_parameters()); }
 
 Outcome check(const ClaimContext& ctx) {
   const Rational step = ctx.pick(Rational(1) / 4, Rational(1) / 32);
@@ -76,7 +82,7 @@ Outcome check(const ClaimContext& ctx) {
                               {"witness", area_witness(diagonal(x, y))}};
   }
   const AreaParameters parameters = svd_parameters();
-  ProofRun proof = run_proof(ctx, area_theorem_plan(ctx, parameters));
+  ProofRun proof = run_proof(ctx, proof_plan(ctx));
   require_agreement(outcome, area_proof_verdict(proof));
   if (printed.disagreements() > 0) outcome.counterexample["from_proof"] = area_proof_counterexample(proof, parameters);
   attach_proof(outcome, std::move(proof));

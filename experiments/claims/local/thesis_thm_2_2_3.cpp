@@ -1,4 +1,5 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/claim_sentences.hpp"
 #include "experiments/claims/local/condition_sweep.hpp"
 #include "experiments/claims/local/local_proof.hpp"
 #include "experiments/claims/local/region_figure.hpp"
@@ -19,6 +20,7 @@ namespace affinterp::claims::local {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
+ProofPlan proof_plan(const ClaimContext& ctx);
 
 const ClaimDeclaration claim{{
     .id = "thesis.thm-2.2.3",
@@ -29,6 +31,8 @@ const ClaimDeclaration claim{{
     .strength = Strength::exact_counterexample,
     .check = check,
 }};
+const SentencesDeclaration sentences{"thesis.thm-2.2.3",
+                                     [](const ClaimContext& ctx) { return proof_plan(ctx).sentences; }};
 
 // Reading: A_s(t) = R_{tα}((1−t)I + tD)R_{tβ} is built from a given SVD (x, y, α, β), x, y > 0, α, β ∈ [0, 2π) as
 //   in the thesis, and the condition is on x, y only. |A_s(t)v| = |((1−t)I + tD)R_{tβ}v|: α drops out, β does not,

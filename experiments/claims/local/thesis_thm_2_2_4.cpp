@@ -1,4 +1,5 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/claim_sentences.hpp"
 #include "experiments/claims/local/area_theorem.hpp"
 #include "experiments/claims/local/area_theorem_proof.hpp"
 #include "experiments/claims/local/area_witness.hpp"
@@ -13,6 +14,7 @@ namespace affinterp::claims::local {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
+ProofPlan proof_plan(const ClaimContext& ctx);
 
 const ClaimDeclaration claim{{
     .id = "thesis.thm-2.2.4",
@@ -22,6 +24,8 @@ const ClaimDeclaration claim{{
     .strength = Strength::exact_counterexample,
     .check = check,
 }};
+const SentencesDeclaration sentences{"thesis.thm-2.2.4",
+                                     [](const ClaimContext& ctx) { return proof_plan(ctx).sentences; }};
 
 // Reading: Def 2.2.1 as for Thm 2.2.1; A_p(t) = R_{tγ}((1−t)I + tS) with S = [[x, h], [h, y]] positive definite, and
 //   det A_p(t) = det((1−t)I + tS) for every γ.
@@ -47,6 +51,8 @@ AreaParameters polar_parameters() {
           },
           "det A_p(t) = det R_{t gamma} det((1-t)I + tS) and det R = cos^2 + sin^2 = 1 (Lemma L5)"};
 }
+
+ProofPlan proof_plan(const ClaimContext& ctx) { return area_theorem_plan(ctx, polar_parameters()); }
 
 Outcome check(const ClaimContext& ctx) {
   const Rational step = ctx.pick(Rational(1) / 4, Rational(1) / 16);
@@ -83,7 +89,7 @@ Outcome check(const ClaimContext& ctx) {
                               {"witness", area_witness(S_of(c))}};
   }
   const AreaParameters parameters = polar_parameters();
-  ProofRun proof = run_proof(ctx, area_theorem_plan(ctx, parameters));
+  ProofRun proof = run_proof(ctx, proof_plan(ctx));
   require_agreement(outcome, area_proof_verdict(proof));
   if (printed.disagreements() > 0) outcome.counterexample["from_proof"] = area_proof_counterexample(proof, parameters);
   attach_proof(outcome, std::move(proof));

@@ -1,4 +1,5 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/claim_sentences.hpp"
 #include "experiments/claims/local/condition_sweep.hpp"
 #include "experiments/claims/local/local_proof.hpp"
 #include "experiments/claims/local/norm_witness.hpp"
@@ -14,6 +15,7 @@ namespace affinterp::claims::local {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
+ProofPlan proof_plan(const ClaimContext& ctx);
 
 const ClaimDeclaration claim{{
     .id = "thesis.thm-2.2.5",
@@ -24,6 +26,8 @@ const ClaimDeclaration claim{{
     .strength = Strength::grid,
     .check = check,
 }};
+const SentencesDeclaration sentences{"thesis.thm-2.2.5",
+                                     [](const ClaimContext& ctx) { return proof_plan(ctx).sentences; }};
 
 // Reading: "good for norm" (Def 2.2.2) = |A_p(t)v| weakly monotone on [0, 1] for every unit v; R_{tγ} is
 //   orthogonal, so |A_p(t)v| = |((1−t)I + tS)v|.
@@ -40,7 +44,7 @@ using affinterp::local::good_for_norm;
 using affinterp::local::thm_2_2_5_condition;
 
 /// The proof: Def 2.2.2 at level N against the printed condition, in S = [[x, h], [h, y]] ≻ 0.
-ProofPlan proof_plan() {
+ProofPlan proof_plan(const ClaimContext&) {
   const Polynomial x = var("x"), y = var("y"), h = var("h"), v1 = var("v1"), v2 = var("v2");
   const PolyMat2 S{{{x, h}, {h, y}}};
   const std::vector<std::string> variables{"x", "y", "h"};
@@ -116,7 +120,7 @@ Outcome check(const ClaimContext& ctx) {
                               {"h", exact::to_string(std::get<2>(c))}, {"printed_condition", condition(c)},
                               {"good_for_norm", property(c)},          {"witness", norm_witness(S_of(c))}};
   }
-  ProofRun proof = run_proof(ctx, proof_plan());
+  ProofRun proof = run_proof(ctx, proof_plan(ctx));
   if (proof.decided_by_two())
     require_agreement(outcome, proof.result("printed.cond-not-prop.N") == "empty" &&
                                        proof.result("printed.prop-not-cond.N") == "empty"

@@ -1,4 +1,5 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/claim_sentences.hpp"
 #include "experiments/claims/local/area_theorem.hpp"
 #include "experiments/claims/local/condition_sweep.hpp"
 #include "experiments/claims/local/local_proof.hpp"
@@ -12,6 +13,7 @@ namespace affinterp::claims::local {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
+ProofPlan proof_plan(const ClaimContext& ctx);
 
 const ClaimDeclaration claim{{
     .id = "thesis.thm-2.2.6",
@@ -21,6 +23,8 @@ const ClaimDeclaration claim{{
     .strength = Strength::grid,
     .check = check,
 }};
+const SentencesDeclaration sentences{"thesis.thm-2.2.6",
+                                     [](const ClaimContext& ctx) { return proof_plan(ctx).sentences; }};
 
 // Reading: Def 2.2.1 as for Thm 2.2.1, for the SVD and the polar interpolation of the same A.
 // Method: proof for all reals (issue 10): with R_β = [[c, −s], [s, c]], c² + s² = 1 (every real β), and
