@@ -1,7 +1,8 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
 #include "experiments/claims/claim_sentences.hpp"
-#include "experiments/proofs/goodness_levels.hpp"
+#include "experiments/proofs/condition_sentences.hpp"
+#include "experiments/proofs/goodness_formulas.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
@@ -38,10 +39,7 @@ AtlasProof proof() {
        std::vector<std::pair<std::string, Polynomial>>{{"a", p}, {"b", -k}, {"c", k}, {"d", r}})
     condition = logic::substitute(condition, name, by);
   const logic::Formula domain = logic::greater(p * r + k * k, 0);  // det A > 0
-  const logic::Formula property = proofs::norm_level_N(normal_form, "nu");
-  const auto sentence = [&](const std::string& name, const std::string& meaning, const logic::Formula& set) {
-    return proofs::Sentence{name, meaning, logic::exists({"p", "r", "k"}, domain && set), {}};
-  };
+  const logic::Formula property = proofs::norm_property(normal_form, "N");
   return AtlasProof{
       .scope = cell.domain_words,
       .method =
@@ -50,14 +48,8 @@ AtlasProof proof() {
           "level N: the squared norm (L4) has an affine t-derivative with non-negative slope, so it is monotone "
           "for v unless P(v) < 0 < Q(v), P = sym(A - I), Q = P + (A - I)^T(A - I) (L3); homogeneous in v "
           "(L6); no such v iff Q <= 0 or P - nu Q >= 0 for some nu >= 0 (Dines 1941, L8)",
-      .sentences = {sentence(
-                        "conj.cond-not-prop.N",
-                        "a normal form [[p, -k], [k, r]] where the condition holds and the property (level N) fails",
-                        condition && !property),
-                    sentence(
-                        "conj.prop-not-cond.N",
-                        "a normal form [[p, -k], [k, r]] where the property (level N) holds and the condition fails",
-                        !condition && property)},
+      .sentences = {proofs::cond_not_prop("conj.", "N", {"p", "r", "k"}, domain, condition, property),
+                    proofs::prop_not_cond("conj.", "N", {"p", "r", "k"}, domain, condition, property)},
       .z3_only = {},
       .identities = {},
   };

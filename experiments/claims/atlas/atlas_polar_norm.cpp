@@ -1,7 +1,7 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
 #include "experiments/claims/claim_sentences.hpp"
-#include "experiments/proofs/goodness_levels.hpp"
+#include "experiments/proofs/goodness_formulas.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
@@ -39,8 +39,7 @@ AtlasProof proof() {
           "(L4) has an affine t-derivative with non-negative slope, so it is monotone for v unless "
           "P(v) < 0 < Q(v), P = sym(S - I), Q = P + (S - I)^2 (L3); homogeneous in v (L6); no such v iff "
           "Q <= 0 or P - nu Q >= 0 for some nu >= 0 (Dines 1941, L8)",
-      .sentences = {cond_not_prop(cell, "N", proofs::norm_level_N(S, "nu")),
-                    prop_not_cond(cell, "N", proofs::norm_level_N(S, "nu"))},
+      .sentences = condition_sentences(cell, "N", proofs::norm_property(S, "N")),
       .z3_only = {},
       .identities = {},
   };

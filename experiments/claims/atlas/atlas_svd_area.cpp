@@ -1,7 +1,7 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
 #include "experiments/claims/claim_sentences.hpp"
-#include "experiments/proofs/goodness_levels.hpp"
+#include "experiments/proofs/goodness_formulas.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
@@ -36,8 +36,7 @@ AtlasProof proof() {
           "Def 2.2.1 for det((1-t)I + tD) (the rotations have determinant 1, Lemma L5) at level E: monotone iff "
           "the derivative keeps one sign on [0, 1] (Lemma L1), read at t = 0 and 1 because it is affine, with "
           "positivity from det > 0 at t = 1 (Lemma L2)",
-      .sentences = {cond_not_prop(cell, "E", proofs::area_level_E(D)),
-                    prop_not_cond(cell, "E", proofs::area_level_E(D))},
+      .sentences = condition_sentences(cell, "E", proofs::area_property(D, "E")),
       .z3_only = {},
       .identities = {},
   };

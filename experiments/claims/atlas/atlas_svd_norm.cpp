@@ -1,6 +1,8 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
 #include "experiments/claims/claim_sentences.hpp"
+#include "experiments/proofs/condition_sentences.hpp"
+#include "experiments/proofs/goodness_formulas.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
@@ -33,8 +35,8 @@ const SentencesDeclaration sentences{"atlas.svd.norm", [](const ClaimContext&) {
 
 using logic::Formula;
 using logic::Polynomial;
-
-Formula on_unit_interval(const Polynomial& t) { return logic::greater_equal(t, 0) && logic::less_equal(t, 1); }
+using proofs::on_unit_interval;
+using proofs::sentence;
 
 AtlasProof proof() {
   const proofs::AtlasCell& cell = proofs::atlas_cell(proofs::Homotopy::svd, proofs::Notion::norm);
@@ -42,10 +44,7 @@ AtlasProof proof() {
                    t = Polynomial::variable("t"), one(1), two(2), four(4);
   const Polynomial B = Polynomial::variable("B"), pi = Polynomial::variable("pi"), sg = Polynomial::variable("sg");
   // L9's G(t) in x, y, β, and in the symmetric coordinates σ, π, B.
-  const auto G = [&](const Polynomial& tt) {
-    return four * (x - one) * (y - one) * (one + tt * (x - one)) * (one + tt * (y - one)) -
-           beta * beta * tt * tt * pow(x - y, 2) * pow(two + tt * (x + y - two), 2);
-  };
+  const auto G = [&](const Polynomial& tt) { return proofs::svd_norm_G(x, y, beta, tt); };
   const auto Gs = [&](const Polynomial& tt, const Polynomial& b, const Polynomial& p) {
     return four * p * (one + tt * sg + tt * tt * p) - b * tt * tt * (sg * sg - four * p) * pow(two + tt * sg, 2);
   };
@@ -65,9 +64,6 @@ AtlasProof proof() {
                         .substitute("pi", (x - one) * (y - one))
                         .substitute("B", beta * beta);
 
-  const auto sentence = [](std::string name, std::string meaning, std::vector<std::string> vars, Formula f) {
-    return proofs::Sentence{std::move(name), std::move(meaning), logic::exists(std::move(vars), std::move(f)), {}};
-  };
   return AtlasProof{
       .scope = cell.domain_words,
       .method =

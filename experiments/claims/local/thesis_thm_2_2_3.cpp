@@ -4,6 +4,7 @@
 #include "experiments/claims/local/local_proof.hpp"
 #include "experiments/claims/local/region_figure.hpp"
 #include "experiments/claims/local/simple_values.hpp"
+#include "experiments/claims/local/thesis_condition_formulas.hpp"
 #include "experiments/claims/values.hpp"
 #include "theory/exact/rational.hpp"
 #include "theory/local/svd_homotopy.hpp"

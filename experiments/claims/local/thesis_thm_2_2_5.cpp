@@ -5,6 +5,7 @@
 #include "experiments/claims/local/norm_witness.hpp"
 #include "experiments/claims/local/region_figure.hpp"
 #include "experiments/claims/local/simple_values.hpp"
+#include "experiments/claims/local/thesis_condition_formulas.hpp"
 #include "theory/local/goodness.hpp"
 #include "theory/local/thesis_conditions.hpp"
 
