@@ -69,10 +69,11 @@ TEST(SentenceFiles, TheBuildersWriteTheCommittedFiles) {
       built.insert(s.name);
     }
     // And no committed sentence is left that the claim no longer builds.
-    if (fs::is_directory(dir))
-      for (const fs::directory_entry& e : fs::directory_iterator(dir))
-        if (e.path().extension() == ".qepcad")
-          EXPECT_TRUE(built.contains(e.path().stem().string())) << e.path() << " is built by no sentence of " << id;
+    if (!fs::is_directory(dir)) continue;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir)) {
+      if (e.path().extension() != ".qepcad") continue;
+      EXPECT_TRUE(built.contains(e.path().stem().string())) << e.path() << " is built by no sentence of " << id;
+    }
   }
 }
 
