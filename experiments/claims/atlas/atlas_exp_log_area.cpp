@@ -23,10 +23,10 @@ const ClaimDeclaration claim{{
 //   empty because the condition is `true`.
 // Sizes: the sentence is the same at every size; the suite has no exact decider for this cell.
 
-Outcome check(const ClaimContext& ctx) {
+AtlasProof proof() {
   using logic::Polynomial;
   const proofs::AtlasCell& cell = proofs::atlas_cell(proofs::Homotopy::exp_log, proofs::Notion::area);
-  const AtlasProof proof{
+  return AtlasProof{
       .scope = cell.domain_words,
       .method =
           "Lemma L10 (exp-log): det A(t) = (det S)^t = exp(t log det S), positive with a derivative of one "
@@ -39,7 +39,11 @@ Outcome check(const ClaimContext& ctx) {
       .identities = {},
       .cites = std::string(proofs::citations::exponential),
   };
-  return atlas_outcome(ctx, cell, proof, {{"x", "y", 0, 4, {{"h", Rational(1, 2)}}, "h = 1/2"}});
+}
+
+Outcome check(const ClaimContext& ctx) {
+  return atlas_outcome(ctx, proofs::atlas_cell(proofs::Homotopy::exp_log, proofs::Notion::area), proof(),
+                       {{"x", "y", 0, 4, {{"h", Rational(1, 2)}}, "h = 1/2"}});
 }
 
 }  // namespace

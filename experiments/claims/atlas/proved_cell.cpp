@@ -1,7 +1,7 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 
 #include "experiments/claims/proof_strength.hpp"
-
+#include "experiments/proofs/condition_sentences.hpp"
 #include "experiments/support/random.hpp"
 #include "plots/region_map.hpp"
 
@@ -95,21 +95,14 @@ proofs::Sentence atlas_sentence(const proofs::AtlasCell& cell, const std::string
                                 const Formula& set, const std::vector<std::string>& extra) {
   std::vector<std::string> variables = cell.variables;
   variables.insert(variables.end(), extra.begin(), extra.end());
-  return {name, meaning, logic::exists(variables, cell.domain && set), {}};
+  return proofs::sentence(name, meaning, variables, cell.domain && set);
 }
 
-proofs::Sentence cond_not_prop(const proofs::AtlasCell& cell, const std::string& level, const Formula& property,
-                               const std::vector<std::string>& extra) {
-  return atlas_sentence(cell, "cond-not-prop." + level,
-                        "a point of the domain where the condition holds and the property (level " + level + ") fails",
-                        cell.condition_formula() && !property, extra);
-}
-
-proofs::Sentence prop_not_cond(const proofs::AtlasCell& cell, const std::string& level, const Formula& property,
-                               const std::vector<std::string>& extra) {
-  return atlas_sentence(cell, "prop-not-cond." + level,
-                        "a point of the domain where the property (level " + level + ") holds and the condition fails",
-                        !cell.condition_formula() && property, extra);
+std::vector<proofs::Sentence> condition_sentences(const proofs::AtlasCell& cell, const std::string& level,
+                                                  const Formula& property) {
+  const Formula condition = cell.condition_formula();
+  return {proofs::cond_not_prop("", level, cell.variables, cell.domain, condition, property),
+          proofs::prop_not_cond("", level, cell.variables, cell.domain, condition, property)};
 }
 
 Outcome atlas_outcome(const ClaimContext& ctx, const proofs::AtlasCell& cell, const AtlasProof& proof,

@@ -46,11 +46,9 @@ Outcome atlas_outcome(const ClaimContext& ctx, const proofs::AtlasCell& cell, co
 /// ∃ cell variables (and `extra`): domain ∧ `set`.
 proofs::Sentence atlas_sentence(const proofs::AtlasCell& cell, const std::string& name, const std::string& meaning,
                                 const logic::Formula& set, const std::vector<std::string>& extra = {});
-/// ∃ cell variables (and `extra`): domain ∧ condition ∧ ¬property, named "cond-not-prop.<level>".
-proofs::Sentence cond_not_prop(const proofs::AtlasCell& cell, const std::string& level, const logic::Formula& property,
-                               const std::vector<std::string>& extra = {});
-/// ∃ cell variables (and `extra`): domain ∧ ¬condition ∧ property, named "prop-not-cond.<level>".
-proofs::Sentence prop_not_cond(const proofs::AtlasCell& cell, const std::string& level, const logic::Formula& property,
-                               const std::vector<std::string>& extra = {});
+/// The cell's condition against `property` (at encoding `level`): "cond-not-prop.<level>" and
+/// "prop-not-cond.<level>" over the cell's variables and domain (experiments/proofs/condition_sentences.hpp).
+std::vector<proofs::Sentence> condition_sentences(const proofs::AtlasCell& cell, const std::string& level,
+                                                  const logic::Formula& property);
 
 }  // namespace affinterp::claims::atlas

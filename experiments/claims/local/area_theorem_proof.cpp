@@ -1,6 +1,7 @@
 #include "experiments/claims/local/area_theorem_proof.hpp"
 
 #include "experiments/claims/local/area_witness.hpp"
+#include "experiments/claims/local/printed_conditions.hpp"
 #include "experiments/claims/values.hpp"
 #include "theory/local/goodness.hpp"
 #include "theory/local/thesis_conditions.hpp"

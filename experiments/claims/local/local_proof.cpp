@@ -6,26 +6,11 @@ namespace affinterp::claims::local {
 
 using logic::greater;
 using logic::less;
-
-proofs::Sentence sentence(std::string name, std::string meaning, std::vector<std::string> variables, Formula body) {
-  return {std::move(name), std::move(meaning), logic::exists(std::move(variables), std::move(body)), {}};
-}
-
-proofs::Sentence cond_not_prop(const std::string& base, const std::string& level,
-                               const std::vector<std::string>& variables, const Formula& domain,
-                               const Formula& condition, const Formula& property) {
-  return sentence(base + "cond-not-prop." + level,
-                  "a point of the domain where the condition holds and the property fails", variables,
-                  domain && condition && !property);
-}
-
-proofs::Sentence prop_not_cond(const std::string& base, const std::string& level,
-                               const std::vector<std::string>& variables, const Formula& domain,
-                               const Formula& condition, const Formula& property) {
-  return sentence(base + "prop-not-cond." + level,
-                  "a point of the domain where the property holds and the condition fails", variables,
-                  domain && !condition && property);
-}
+using proofs::for_all_times;
+using proofs::monotone_derivative;
+using proofs::monotone_endpoints;
+using proofs::monotone_literal;
+using proofs::on_unit_interval;
 
 namespace {
 

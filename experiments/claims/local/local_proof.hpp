@@ -4,10 +4,11 @@
 // the method rests on (checked by exact polynomial arithmetic), and for a non-empty sentence a counterexample
 // shrunk to small rationals and re-verified by the suite's own exact evaluators.
 #include "experiments/claims/context.hpp"
-#include "experiments/claims/local/goodness_formulas.hpp"
 #include "experiments/claims/outcome.hpp"
 #include "experiments/claims/proof_strength.hpp"
+#include "experiments/proofs/condition_sentences.hpp"
 #include "experiments/proofs/decide_sentence.hpp"
+#include "experiments/proofs/goodness_formulas.hpp"
 #include "experiments/proofs/witness.hpp"
 
 #include <map>
@@ -18,17 +19,25 @@
 
 namespace affinterp::claims::local {
 
-/// ∃ variables: body, named and explained.
-proofs::Sentence sentence(std::string name, std::string meaning, std::vector<std::string> variables, Formula body);
-
-/// "<base>cond-not-prop.<level>": ∃ variables: domain ∧ condition ∧ ¬property.
-proofs::Sentence cond_not_prop(const std::string& base, const std::string& level,
-                               const std::vector<std::string>& variables, const Formula& domain,
-                               const Formula& condition, const Formula& property);
-/// "<base>prop-not-cond.<level>": ∃ variables: domain ∧ ¬condition ∧ property.
-proofs::Sentence prop_not_cond(const std::string& base, const std::string& level,
-                               const std::vector<std::string>& variables, const Formula& domain,
-                               const Formula& condition, const Formula& property);
+// The sentences and the goodness formulas are built by experiments/proofs, the same builders as the atlas's.
+using logic::Formula;
+using logic::Polynomial;
+using proofs::area_property;
+using proofs::cond_not_prop;
+using proofs::det;
+using proofs::det_of_blend;
+using proofs::norm_property;
+using proofs::norm_squared_of_blend;
+using proofs::PolyMat2;
+using proofs::product;
+using proofs::prop_not_cond;
+using proofs::rotation;
+using proofs::sentence;
+using proofs::svd_norm_G;
+using proofs::svd_norm_property;
+using proofs::trace;
+using proofs::transpose;
+using proofs::var;
 
 /// The lemmas (reports/proofs/LEMMAS.md) that are sentences themselves, for every quadratic f = 1 + c1 t + c2 t².
 proofs::Sentence lemma_L1();       ///< monotone as written ⇔ f′ of one sign on [0, 1]

@@ -2,6 +2,7 @@
 #include "experiments/claims/local/condition_sweep.hpp"
 #include "experiments/claims/local/local_proof.hpp"
 #include "experiments/claims/local/norm_witness.hpp"
+#include "experiments/claims/local/printed_conditions.hpp"
 #include "experiments/claims/local/region_figure.hpp"
 #include "experiments/claims/local/simple_values.hpp"
 #include "experiments/proofs/citations.hpp"

@@ -1,6 +1,7 @@
 #pragma once
-// Thesis Defs 2.2.1 (good for area) and 2.2.2 (good for norm), and the conditions the thesis prints for them,
-// as first-order formulas over the reals (issue 10): the sentences that prove the local claims for all reals.
+// Thesis Defs 2.2.1 (good for area) and 2.2.2 (good for norm) as first-order formulas over the reals (issue 10):
+// the properties in the sentences that prove the local claims and the goodness atlas for all reals
+// (condition_sentences.hpp).
 // Every polynomial is built from the homotopy itself, A(t) = U(t)((1−t)I + tB)V(t) with rotations U, V that
 // leave det and ‖·‖ alone (Lemma L5): det((1−t)I + tB) and ‖((1−t)I + tB)v‖², the same formulas that
 // theory/local/goodness.hpp decides exactly at rational points. A property is written at one encoding level
@@ -15,7 +16,7 @@
 #include <array>
 #include <string>
 
-namespace affinterp::claims::local {
+namespace affinterp::proofs {
 
 using logic::Formula;
 using logic::Polynomial;
@@ -63,13 +64,4 @@ Polynomial svd_norm_G(const Polynomial& x, const Polynomial& y, const Polynomial
 /// Def 2.2.2 for R_{tα}((1−t)I + tD)R_{tβ}, D = diag(x, y): ∀t ∈ [0, 1] G(t) ≥ 0 (level G, Lemma L9).
 Formula svd_norm_property(const Polynomial& x, const Polynomial& y, const Polynomial& beta);
 
-/// Thm 2.2.1 as printed: tr ≥ det + 1, or 2 det ≤ tr < 2, or 2 ≤ tr < 2 det (theory/local/thesis_conditions.hpp).
-Formula thm_2_2_1_formula(const Polynomial& trace, const Polynomial& det);
-/// The corrected area condition: 2 det ≤ tr ≤ 2, or 2 ≤ tr ≤ 2 det.
-Formula corrected_area_formula(const Polynomial& trace, const Polynomial& det);
-/// Thm 2.2.3 as printed: x, y ≥ 1, or 0 < x, y ≤ 1.
-Formula thm_2_2_3_formula(const Polynomial& x, const Polynomial& y);
-/// Thm 2.2.5 as printed: (x−1)(y−1) ≥ h² and (x + y ≥ 2 or 0 < x, y ≤ 1).
-Formula thm_2_2_5_formula(const Polynomial& x, const Polynomial& y, const Polynomial& h);
-
-}  // namespace affinterp::claims::local
+}  // namespace affinterp::proofs
