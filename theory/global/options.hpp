@@ -81,8 +81,11 @@ struct InterpolationOptions {
   /// w_i of the blend, one per triangle; empty means `blend_weight` for every triangle.
   Eigen::VectorXd blend_weights;
   double blend_weight = 0.5;
-  /// E_i ← Area(p_{i1}, p_{i2}, p_{i3}) E_i ("Improvements").
-  bool area_weighted = false;
+  /// E_i ← Area(p_{i1}, p_{i2}, p_{i3}) E_i ("Improvements"): on by default, as Kaji recommend it ("it is
+  /// reasonable to weight by the areas of the initial triangles", Fig. 7 against the unweighted Fig. 6) and
+  /// as it makes the global error a sum over the shape's area, not over its triangles, so that refining a
+  /// region does not make it stiffer. False gives the plain sum of Kaji §4 (Figs. 2–6).
+  bool area_weighted = true;
   /// E′(t) = E(t) + E^{−1}(1 − t): the reverse problem's energy in the same unknowns ("Improvements").
   bool symmetric = false;
   Constraints constraints;
@@ -92,9 +95,11 @@ struct InterpolationOptions {
 
 std::string to_string(LocalHomotopy homotopy);
 std::string to_string(Energy energy);
-/// Parses the names used by to_string ("exp", "polar", "linear", "svd"; "F", "S", "R", "blend").
-/// Throws std::invalid_argument on anything else.
+std::string to_string(RotationBranch branch);
+/// Parses the names used by to_string ("exp", "polar", "linear", "svd"; "F", "S", "R", "blend";
+/// "principal", "consistent"). Throws std::invalid_argument on anything else.
 LocalHomotopy parse_local_homotopy(const std::string& name);
 Energy parse_energy(const std::string& name);
+RotationBranch parse_rotation_branch(const std::string& name);
 
 }  // namespace affinterp::global

@@ -31,16 +31,28 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// The engine's defaults (theory/global/options.hpp decides them; the options below only spell them).
+const global::InterpolationOptions engine_defaults{};
+
+std::string default_time_range() {
+  std::ostringstream range;
+  range << engine_defaults.t_begin << ':' << engine_defaults.t_end;
+  return range.str();
+}
+
 struct InterpolateOptions {
   std::string source, target, out;
   int frames = 30;
-  std::string local = "exp", energy = "R", rotation_branch = "consistent";
-  double blend_weight = 0.5;
+  std::string local = global::to_string(engine_defaults.homotopy), energy = global::to_string(engine_defaults.energy),
+              rotation_branch = global::to_string(engine_defaults.rotation_branch);
+  double blend_weight = engine_defaults.blend_weight;
   std::string weights_file;
-  bool area_weights = true, symmetric = false, allow_flipped_target = false, figures = true;
+  bool area_weights = engine_defaults.area_weighted, symmetric = engine_defaults.symmetric,
+       allow_flipped_target = false, figures = true;
   std::vector<std::string> pins, loci, edges;
+  /// The gauge of translation: a CLI choice, as the engine's Constraints are what its caller asks for.
   std::string barycentre = "linear";
-  std::string time_range = "0:1";
+  std::string time_range = default_time_range();
   std::optional<std::string> times;  ///< --times T1,T2,...: exactly these frames (not with --frames, --time-range)
 };
 
@@ -91,8 +103,7 @@ global::InterpolationOptions engine_options(const InterpolateOptions& o, const i
   try {
     options.homotopy = global::parse_local_homotopy(o.local);
     options.energy = global::parse_energy(o.energy);
-    options.rotation_branch =
-        o.rotation_branch == "principal" ? global::RotationBranch::principal : global::RotationBranch::consistent;
+    options.rotation_branch = global::parse_rotation_branch(o.rotation_branch);
     options.blend_weight = o.blend_weight;
     options.area_weighted = o.area_weights;
     options.symmetric = o.symmetric;
@@ -306,8 +317,10 @@ void add_interpolate_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--weights", o->weights_file,
                   "File of per-triangle blend weights w_i, one per line (--energy blend)");
-  cmd->add_flag("--area-weights,!--no-area-weights", o->area_weights,
-                "Weight each E_i by its source triangle's area (default; --no-area-weights: plain sum)");
+  cmd->add_flag(
+      "--area-weights,!--no-area-weights", o->area_weights,
+      std::string("Weight each E_i by its source triangle's area (Kaji, Improvements; ") +
+          (engine_defaults.area_weighted ? "the default; --no-area-weights: plain sum)" : "default: plain sum)"));
   cmd->add_flag("--symmetric", o->symmetric, "Symmetric energy E(t) + E^-1(1-t)");
   cmd->add_option("--pin", o->pins, "V[@C]: vertex V moves on the straight line p_V -> q_V (repeatable)");
   cmd->add_option("--locus", o->loci,
