@@ -1,7 +1,7 @@
 // Interrupted runs leave nothing behind: `affinterp interpolate --out OUT` and `affinterp claims --out R`,
 // killed by SIGTERM or SIGINT in the middle (once their staging folder holds files), end by that signal,
-// leave no `.OUT.staging-PID` folder, no decider (QEPCAD B, Z3) running, and OUT's earlier files as they
-// were; and a staging folder that a process no longer running left behind is removed by the next run,
+// leave no `.OUT.staging-PID` folder and OUT's earlier files as they were; `affinterp prove` killed leaves no
+// decider running; and a staging folder that a process no longer running left behind is removed by the next run,
 // while a live process's is kept.
 #include "checks/apps/cli_harness.hpp"
 
@@ -14,6 +14,7 @@
 
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -174,20 +175,26 @@ bool running(pid_t pid) {
   return close != std::string::npos && close + 2 < line.size() && line[close + 2] != 'Z';
 }
 
-// A claim decided by QEPCAD B and Z3, killed while a decider runs: the deciders are killed with it (they
-// run in process groups of their own, which no terminal signal reaches), nothing is left beside OUT.
-TEST(Interrupted, ClaimsKilledWhileADeciderRunsLeaveNothingRunning) {
-  const fs::path report = scratch("deciding") / "runs" / "report";
-  fs::create_directories(report);
-  write_text(report / "claims.json", "{\"earlier\": true}\n");
-  const pid_t pid = start({"claims", "--only", "thesis.thm-2.2.1", "--size", "quick", "--threads", "1", "--no-figures",
-                           "--out", report.string()});
+// `affinterp prove` killed while a decider runs: the deciders are killed with it (they run in process groups of
+// their own, which no terminal signal reaches). It needs the real deciders, so it runs in the `proof` tier
+// (test interrupt.prove, AFFINTERP_DECIDERS_RUN set); the unit tier's PATH has stand-ins that exit at once.
+TEST(Interrupted, ProveKilledWhileADeciderRunsLeavesNoDeciderRunning) {
+  if (std::getenv("AFFINTERP_DECIDERS_RUN") == nullptr) GTEST_SKIP() << "runs in the proof tier (interrupt.prove)";
+  const fs::path answers = scratch("deciding") / "answers";
+  fs::create_directories(answers);
+  fs::copy(fs::path(AFFINTERP_SOURCE_DIR) / "reports/proofs/thesis.thm-2.2.1", answers / "thesis.thm-2.2.1",
+           fs::copy_options::recursive);
+  const pid_t pid = start({"prove", "thesis.thm-2.2.1", "--all", "--jobs", "1", "--answers", answers.string()});
   std::vector<std::pair<pid_t, std::string>> deciders;
   ASSERT_TRUE(wait_until(pid, [&] {
     deciders = children_of(pid);
     return !deciders.empty();
-  })) << "the claim ended before a decider started";
-  interrupt_when_staged(pid, SIGTERM, report, "proofs", {{"claims.json", "{\"earlier\": true}\n"}});
+  })) << "prove ended before a decider started";
+  ASSERT_EQ(kill(pid, SIGTERM), 0);
+  int status = 0;
+  for (int tries = 0; tries < 3000 && waitpid(pid, &status, WNOHANG) == 0; ++tries)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
   for (const auto& [child, name] : deciders) {
     for (int tries = 0; tries < 500 && running(child); ++tries)
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
