@@ -19,17 +19,22 @@ bash "$src/checks/consumer/baseline_only.sh" "${archives[@]}"
 config=$(dirname "$(find "$work/prefix" -name affinterpConfig.cmake)")
 config=${config#"$work/prefix/"}
 
+# The build's compiler launcher (ccache) serves the outside project too.
+launcher=$(sed -n 's/^CMAKE_CXX_COMPILER_LAUNCHER:[A-Z]*=//p' "$build/CMakeCache.txt")
+
 # consume NAME PREFIX [CMAKE_OPTION...]: configures the outside project against the package under PREFIX
-# (checked: that one and no other), builds it and runs it. Debug: this checks the package, not speed, and compiles fastest.
+# (checked: that one and no other), builds it and runs it. Debug: this checks the package, not speed, and
+# compiles fastest.
 consume() {
-  local dir=$work/$1 prefix=$2
+  local name=$1 dir=$work/$1 prefix=$2
   shift 2
-  cmake -S "$src/checks/consumer" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_PREFIX_PATH="$prefix" "$@" \
+  cmake -S "$src/checks/consumer" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_PREFIX_PATH="$prefix" \
+    -DCMAKE_CXX_COMPILER_LAUNCHER="$launcher" "$@" \
     >"$dir.configure.log" || { cat "$dir.configure.log"; exit 1; }
   local found
   found=$(sed -n 's/^affinterp_DIR:PATH=//p' "$dir/CMakeCache.txt")
   if [[ $found != "$prefix/$config" ]]; then
-    echo "consumer: the $1 build found affinterp in $found, not in $prefix/$config" >&2
+    echo "consumer: the $name build found affinterp in $found, not in $prefix/$config" >&2
     exit 1
   fi
   cmake --build "$dir"
