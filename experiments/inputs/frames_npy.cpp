@@ -3,6 +3,7 @@
 #include "experiments/inputs/mesh_file.hpp"
 
 #include <bit>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 

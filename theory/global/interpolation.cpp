@@ -165,7 +165,7 @@ std::vector<Eigen::Matrix2Xd> Interpolation::vertices_at(const std::vector<doubl
   const bool isotropic = engine.assembly->isotropic();
   std::size_t workers = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), times.size());
   if (!isotropic) {  // a factor per worker, within 1 GiB
-    const double bytes = engine.per_frame.minimiser.factor().factor_bytes();
+    const double bytes = std::max(1.0, engine.per_frame.minimiser.factor().factor_bytes());
     workers = std::min(workers, static_cast<std::size_t>(std::max(1.0, std::floor(1073741824.0 / bytes))));
   }
   std::atomic<std::size_t> next{0};
