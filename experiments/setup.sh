@@ -6,7 +6,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
 packages=(
   cmake g++ make ninja-build pkg-config
-  libeigen3-dev libboost-dev libboost-iostreams-dev libboost-filesystem-dev
+  libeigen3-dev libsuitesparse-dev libboost-dev libboost-iostreams-dev libboost-filesystem-dev
   libgtest-dev googletest librapidcheck-dev libbenchmark-dev
   libgnuplot-iostream-dev gnuplot-nox fonts-dejavu-core
   libcairo2-dev libgif-dev chromium

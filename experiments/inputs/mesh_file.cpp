@@ -294,15 +294,25 @@ global::Mesh read_mesh(const fs::path& file) {
 sym3::Mesh3 read_off_surface(const fs::path& file) { return parse_off_surface(file_text(file), file.string()); }
 
 std::string obj_text(const global::Mesh& mesh) {
-  std::ostringstream out;
-  out.precision(17);
-  out << "# " << mesh.vertex_count() << " vertices, " << mesh.triangle_count() << " triangles (affinterp)\n";
-  for (Eigen::Index k = 0; k < mesh.vertex_count(); ++k)
-    out << "v " << mesh.vertices(0, k) << ' ' << mesh.vertices(1, k) << " 0\n";
-  for (Eigen::Index i = 0; i < mesh.triangle_count(); ++i)
-    out << "f " << mesh.triangles(0, i) + 1 << ' ' << mesh.triangles(1, i) + 1 << ' ' << mesh.triangles(2, i) + 1
-        << '\n';
-  return out.str();
+  // std::to_chars: the shortest text that reads back to the same double, without the streams' locale and
+  // formatting state (a 1M-triangle frame in 0.1 s rather than 0.6 s)
+  std::string out = "# " + std::to_string(mesh.vertex_count()) + " vertices, " + std::to_string(mesh.triangle_count()) +
+                    " triangles (affinterp)\n";
+  out.reserve(out.size() + 56 * static_cast<std::size_t>(mesh.vertex_count()) +
+              24 * static_cast<std::size_t>(mesh.triangle_count()));
+  char buffer[32];
+  auto append = [&](auto x) {
+    const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
+    out.append(buffer, end);
+  };
+  for (Eigen::Index k = 0; k < mesh.vertex_count(); ++k) {
+    out += "v ", append(mesh.vertices(0, k)), out += ' ', append(mesh.vertices(1, k)), out += " 0\n";
+  }
+  for (Eigen::Index i = 0; i < mesh.triangle_count(); ++i) {
+    out += "f ", append(mesh.triangles(0, i) + 1), out += ' ', append(mesh.triangles(1, i) + 1);
+    out += ' ', append(mesh.triangles(2, i) + 1), out += '\n';
+  }
+  return out;
 }
 
 void write_obj(const global::Mesh& mesh, const fs::path& file) {

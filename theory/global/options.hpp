@@ -74,6 +74,12 @@ struct Constraints {
   std::optional<BarycentreLocus> barycentre;
 };
 
+/// The sparse Cholesky back-end (sparse_factor.hpp).
+enum class SparseBackEnd {
+  simplicial,  ///< Eigen's SimplicialLDLT
+  cholmod,     ///< CHOLMOD's supernodal LLᴴ (when built in)
+};
+
 struct InterpolationOptions {
   LocalHomotopy homotopy = LocalHomotopy::exp;
   Energy energy = Energy::similarity;
@@ -91,6 +97,9 @@ struct InterpolationOptions {
   Constraints constraints;
   /// The times vertices_at accepts (loci are parameterised on [0, 1] and extended by their end cubics).
   double t_begin = 0.0, t_end = 1.0;
+  /// The sparse back-end; none: chosen by the mesh's size (sparse_factor.hpp). Same minimiser either way,
+  /// to rounding; for benchmarks comparing them.
+  std::optional<SparseBackEnd> back_end;
 };
 
 std::string to_string(LocalHomotopy homotopy);
