@@ -15,6 +15,7 @@ declare -A allowed=(
   [experiments/inputs]="theory experiments/support experiments/inputs"
   [experiments/proofs]="theory experiments/support experiments/proofs"
   [experiments/claims]="theory reports plots experiments/support experiments/inputs experiments/proofs experiments/claims"
+  [experiments/python]="theory experiments/support experiments/inputs experiments/proofs experiments/python"
   [experiments/apps]="theory reports plots experiments/support experiments/inputs experiments/proofs experiments/claims experiments/apps"
 )
 
