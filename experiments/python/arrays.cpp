@@ -83,7 +83,7 @@ DoubleArray matrices(const py::object& a, const std::string& name, int size, boo
   single = m.ndim() == 2;
   if (single) {
     check_shape(m, name, {size, size}, words);
-    m = m.reshape({py::ssize_t{1}, py::ssize_t{size}, py::ssize_t{size}});
+    m = DoubleArray::ensure(m.reshape({py::ssize_t{1}, py::ssize_t{size}, py::ssize_t{size}}));
   }
   check_shape(m, name, {-1, size, size}, words);
   check_finite(m, name);

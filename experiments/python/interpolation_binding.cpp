@@ -60,8 +60,10 @@ class Interpolation {
     py::array_t<double> out(
         {static_cast<py::ssize_t>(ts.size()), static_cast<py::ssize_t>(vertex_count_), py::ssize_t{2}});
     double* data = out.mutable_data();
-    py::gil_scoped_release unlocked;
-    fill_frames(ts, data);
+    {
+      py::gil_scoped_release unlocked;
+      fill_frames(ts, data);
+    }
     return out;
   }
 
