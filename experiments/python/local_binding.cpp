@@ -48,7 +48,7 @@ py::object decide_each(const py::object& B_in) {
     out.mutable_data()[k] = good(B);
   }
   if (single) return py::bool_(out.data()[0]);
-  return std::move(out);
+  return out;
 }
 
 }  // namespace
