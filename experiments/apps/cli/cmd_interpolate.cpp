@@ -270,7 +270,7 @@ void add_interpolate_command(CLI::App& app) {
       "zero-area "
       "source triangles and flipped target triangles (unless allowed) are refused. On any error OUT keeps its earlier "
       "content.");
-  cmd->add_option("--source", o->source, "Source mesh (.obj or .off; z must be 0)")->required();
+  cmd->add_option("--source", o->source, "Source mesh (.obj, .off, .ply, .stl or .ts; z must be 0)")->required();
   cmd->add_option("--target", o->target, "Target mesh with the same triangles")->required();
   cmd->add_option("--out", o->out, "Output folder")->required();
   CLI::Option* frames =
