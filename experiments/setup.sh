@@ -6,7 +6,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
 packages=(
   cmake g++ make ninja-build pkg-config
-  libeigen3-dev libboost-dev libboost-iostreams-dev libboost-filesystem-dev
+  libeigen3-dev libsuitesparse-dev libboost-dev libboost-iostreams-dev libboost-filesystem-dev
   libgtest-dev googletest librapidcheck-dev libbenchmark-dev
   libgnuplot-iostream-dev gnuplot-nox fonts-dejavu-core
   libcairo2-dev libgif-dev chromium
@@ -14,7 +14,7 @@ packages=(
   libcgal-dev libcgal-demo libxsimd-dev
   libginac-dev ginac-tools
   libflint-arb-dev
-  qepcad z3 libz3-dev
+  qepcad z3 libz3-dev cvc5 libssl-dev
   clang libclang-rt-14-dev clang-format
   pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
 )

@@ -4,6 +4,7 @@
 #include "checks/inputs/shared_meshes.hpp"
 #include "experiments/inputs/mesh_file.hpp"
 #include "experiments/inputs/shapes/catalogue.hpp"
+#include "theory/global/options.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -148,6 +149,26 @@ TEST(InterpolateCli, AcceptsEveryOptionFamily) {
     const auto result = run_cli("interpolate " + options + io);
     EXPECT_EQ(result.status, 0) << options << ": " << result.error;
   }
+}
+
+// One place decides each default (theory/global/options.hpp): `interpolate` with no option runs what
+// global::InterpolationOptions{} says, as metrics.json records it.
+TEST(InterpolateCli, DefaultsAreTheEnginesDefaults) {
+  const fs::path folder = scratch("defaults");
+  ASSERT_EQ(run_cli("shapes random --out " + folder.string()).status, 0);
+  const auto result = run_cli("interpolate --source " + (folder / "source.obj").string() + " --target " +
+                              (folder / "target.obj").string() + " --no-figures --out " + (folder / "out").string());
+  ASSERT_EQ(result.status, 0) << result.error;
+  const nlohmann::json used = read_json(folder / "out" / "metrics.json")["options"];
+  const global::InterpolationOptions defaults{};
+  EXPECT_EQ(used["local"], global::to_string(defaults.homotopy));
+  EXPECT_EQ(used["energy"], global::to_string(defaults.energy));
+  EXPECT_EQ(used["rotation_branch"], global::to_string(defaults.rotation_branch));
+  EXPECT_EQ(used["area_weights"], defaults.area_weighted);
+  EXPECT_EQ(used["symmetric"], defaults.symmetric);
+  EXPECT_EQ(used["blend_weight"], defaults.blend_weight);
+  EXPECT_EQ(used["time_range"], nlohmann::json({defaults.t_begin, defaults.t_end}));
+  EXPECT_TRUE(used["pins"].empty() && used["loci"].empty() && used["edge_directions"].empty());
 }
 
 TEST(InterpolateCli, ClockwiseFilesAreReorientedAndFramesKeepTheirFaceList) {

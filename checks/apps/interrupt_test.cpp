@@ -1,7 +1,8 @@
 // Interrupted runs leave nothing behind: `affinterp interpolate --out OUT` and `affinterp claims --out R`,
 // killed by SIGTERM or SIGINT in the middle (once their staging folder holds files), end by that signal,
-// leave no `.OUT.staging-PID` folder and leave OUT's earlier files as they were; and a staging folder that
-// a process no longer running left behind is removed by the next run, while a live process's is kept.
+// leave no `.OUT.staging-PID` folder and OUT's earlier files as they were; `affinterp prove` killed leaves no
+// decider running; and a staging folder that a process no longer running left behind is removed by the next run,
+// while a live process's is kept.
 #include "checks/apps/cli_harness.hpp"
 
 #include <gtest/gtest.h>
@@ -13,7 +14,10 @@
 
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <fstream>
+#include <sstream>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -139,6 +143,63 @@ TEST(Interrupted, ClaimsKilledBySigtermLeaveNothing) {
   interrupt_when_staged(pid, SIGTERM, report, "figures",
                         {{"claims.json", "{\"earlier\": true}\n"}, {"REPORT.md", "earlier\n"}},
                         std::chrono::milliseconds(1500));  // checks running, figures being drawn
+}
+
+/// The processes whose parent is `pid` (from /proc), with their names.
+std::vector<std::pair<pid_t, std::string>> children_of(pid_t pid) {
+  std::vector<std::pair<pid_t, std::string>> children;
+  std::error_code ignored;
+  for (const auto& entry : fs::directory_iterator("/proc", ignored)) {
+    std::ifstream stat(entry.path() / "stat");
+    std::string line;
+    if (!std::getline(stat, line)) continue;
+    // pid (comm) state ppid ...: comm may hold spaces and parentheses, so read from the last ')'.
+    const auto close = line.rfind(')');
+    if (close == std::string::npos) continue;
+    std::istringstream rest(line.substr(close + 2));
+    char state = 0;
+    pid_t parent = 0;
+    rest >> state >> parent;
+    if (parent == pid)
+      children.emplace_back(std::stoi(line), line.substr(line.find('(') + 1, close - line.find('(') - 1));
+  }
+  return children;
+}
+
+/// True while `pid` runs (a zombie has ended).
+bool running(pid_t pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(stat, line)) return false;
+  const auto close = line.rfind(')');
+  return close != std::string::npos && close + 2 < line.size() && line[close + 2] != 'Z';
+}
+
+// `affinterp prove` killed while a decider runs: the deciders are killed with it (they run in process groups of
+// their own, which no terminal signal reaches). It needs the real deciders, so it runs in the `proof` tier
+// (test interrupt.prove, AFFINTERP_DECIDERS_RUN set); the unit tier's PATH has stand-ins that exit at once.
+TEST(Interrupted, ProveKilledWhileADeciderRunsLeavesNoDeciderRunning) {
+  if (std::getenv("AFFINTERP_DECIDERS_RUN") == nullptr) GTEST_SKIP() << "runs in the proof tier (interrupt.prove)";
+  const fs::path answers = scratch("deciding") / "answers";
+  fs::create_directories(answers);
+  fs::copy(fs::path(AFFINTERP_SOURCE_DIR) / "reports/proofs/thesis.thm-2.2.1", answers / "thesis.thm-2.2.1",
+           fs::copy_options::recursive);
+  const pid_t pid = start({"prove", "thesis.thm-2.2.1", "--all", "--jobs", "1", "--answers", answers.string()});
+  std::vector<std::pair<pid_t, std::string>> deciders;
+  ASSERT_TRUE(wait_until(pid, [&] {
+    deciders = children_of(pid);
+    return !deciders.empty();
+  })) << "prove ended before a decider started";
+  ASSERT_EQ(kill(pid, SIGTERM), 0);
+  int status = 0;
+  for (int tries = 0; tries < 3000 && waitpid(pid, &status, WNOHANG) == 0; ++tries)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
+  for (const auto& [child, name] : deciders) {
+    for (int tries = 0; tries < 500 && running(child); ++tries)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    EXPECT_FALSE(running(child)) << name << " (" << child << ") still runs after its parent was killed";
+  }
 }
 
 TEST(Interrupted, AStaleStagingFolderIsRemovedByTheNextRun) {

@@ -1,7 +1,7 @@
-// The percentile bootstrap of experiments/claims/bootstrap.hpp: the same interval for a seed, intervals that
+// The percentile bootstrap of experiments/bench/bootstrap.hpp: the same interval for a seed, intervals that
 // cover a known median about 95% of the time with the width the normal theory predicts, and the placement
 // of an interval against a band.
-#include "experiments/claims/bootstrap.hpp"
+#include "experiments/bench/bootstrap.hpp"
 
 #include "experiments/support/random.hpp"
 
@@ -11,7 +11,7 @@
 #include <numbers>
 #include <vector>
 
-namespace affinterp::claims {
+namespace affinterp::bench {
 namespace {
 
 /// n draws from the normal distribution N(mu, sigma²) (Box–Muller).
@@ -33,10 +33,10 @@ TEST(Bootstrap, Median) {
 TEST(Bootstrap, IsDeterministicForASeed) {
   const std::vector<double> slow = {10, 11, 12, 10.5, 11.5, 13, 10.2, 11.1, 12.4, 10.9};
   const std::vector<double> fast = {5, 5.5, 5.2, 5.1, 6, 5.3, 5.05, 5.4, 5.6, 5.25};
-  const Interval a = ratio_of_medians_ci95(slow, fast, 42), b = ratio_of_medians_ci95(slow, fast, 42);
+  const Interval a = ratio_of_medians_ci95({slow}, {fast}, 42), b = ratio_of_medians_ci95({slow}, {fast}, 42);
   EXPECT_EQ(a.lo, b.lo);
   EXPECT_EQ(a.hi, b.hi);
-  const Interval c = ratio_of_medians_ci95(slow, fast, 43);
+  const Interval c = ratio_of_medians_ci95({slow}, {fast}, 43);
   EXPECT_TRUE(a.lo != c.lo || a.hi != c.hi);  // another seed, another resampling
   const double ratio = median(slow) / median(fast);
   EXPECT_LT(a.lo, ratio);
@@ -44,7 +44,7 @@ TEST(Bootstrap, IsDeterministicForASeed) {
 }
 
 TEST(Bootstrap, ConstantSamplesGiveAPointInterval) {
-  const Interval ci = ratio_of_medians_ci95(std::vector<double>(10, 6.0), std::vector<double>(12, 2.0), 1);
+  const Interval ci = ratio_of_medians_ci95({std::vector<double>(10, 6.0)}, {std::vector<double>(12, 2.0)}, 1);
   EXPECT_EQ(ci.lo, 3.0);
   EXPECT_EQ(ci.hi, 3.0);
 }
@@ -60,7 +60,7 @@ TEST(Bootstrap, CoversAKnownMedianAbout95PercentOfTheTime) {
   constexpr int trials = 400;
   for (int t = 0; t < trials; ++t) {
     const Interval ci = bootstrap_interval(
-        {normal_sample(rng, 60, 5, 1)}, [](const auto& s) { return median(s[0]); }, rng.bits(), 0.95, 1000);
+        {{normal_sample(rng, 60, 5, 1)}}, [](const auto& s) { return median(s[0]); }, rng.bits(), 0.95, 1000);
     covered += ci.lo <= 5 && 5 <= ci.hi;
     width += (ci.hi - ci.lo) / trials;
   }
@@ -76,11 +76,31 @@ TEST(Bootstrap, RatioIntervalCoversAKnownRatio) {
   constexpr int trials = 200;
   for (int t = 0; t < trials; ++t) {
     const Interval ci = bootstrap_interval(
-        {normal_sample(rng, 20, 300, 15), normal_sample(rng, 20, 100, 5)},
+        {{normal_sample(rng, 20, 300, 15)}, {normal_sample(rng, 20, 100, 5)}},
         [](const auto& s) { return median(s[0]) / median(s[1]); }, rng.bits(), 0.95, 1000);
     covered += ci.lo <= 3 && 3 <= ci.hi;
   }
   EXPECT_GE(covered, static_cast<int>(0.85 * trials));
+}
+
+TEST(Bootstrap, ProcessesThatDisagreeWidenTheInterval) {
+  // Ten repetitions in each of two processes, tight within each, the second process 20% slower on `slow` only
+  // (a slow phase of the machine): pooled as one process the interval is narrow; kept as two, the first stage
+  // draws either process alone part of the time, and the interval spans both processes' ratios.
+  std::vector<double> slow_a(10), slow_b(10), fast_a(10), fast_b(10);
+  for (int i = 0; i < 10; ++i) {
+    slow_a[i] = 300 + i * 0.1, slow_b[i] = 360 + i * 0.1;
+    fast_a[i] = 100 + i * 0.05, fast_b[i] = 100 + i * 0.05;
+  }
+  std::vector<double> slow_all = slow_a, fast_all = fast_a;
+  slow_all.insert(slow_all.end(), slow_b.begin(), slow_b.end());
+  fast_all.insert(fast_all.end(), fast_b.begin(), fast_b.end());
+  const Interval one = ratio_of_medians_ci95({slow_all}, {fast_all}, 5);
+  const Interval two = ratio_of_medians_ci95({slow_a, slow_b}, {fast_a, fast_b}, 5);
+  EXPECT_LT(two.lo, 3.01);
+  EXPECT_GT(two.hi, 3.59);
+  EXPECT_GT(two.hi - two.lo, one.hi - one.lo);
+  EXPECT_THROW(ratio_of_medians_ci95({slow_a, slow_b}, {fast_a}, 5), std::invalid_argument);
 }
 
 TEST(Bootstrap, PlacementAgainstABand) {
@@ -95,4 +115,4 @@ TEST(Bootstrap, PlacementAgainstABand) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::bench

@@ -113,7 +113,7 @@ TEST(ClaimsJson, HasTheRequiredFieldsAndKeepsEarlierEntries) {
   std::ostringstream progress;
   const auto results = run_claims(registry, RunContext{}, {"kaji.linear.collapse"}, progress);
   const nlohmann::json previous = {{"claims", {{{"id", "kaji.polar.det"}, {"verdict", "confirmed"}}}}};
-  const auto doc = claims_document(registry, results, RunContext{}, {{"cpu", "x"}}, previous);
+  const auto doc = claims_document(registry, results, RunContext{}, {{"cpu", "x"}}, previous, {});
   ASSERT_EQ(doc["claims"].size(), 2u);
   const auto& c = doc["claims"][0];
   EXPECT_EQ(c["id"], "kaji.linear.collapse");

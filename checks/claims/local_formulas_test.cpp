@@ -1,9 +1,11 @@
-// The local claims' first-order encodings (experiments/claims/local/goodness_formulas.hpp) against the suite's
-// exact evaluators (theory/local/goodness.hpp, thesis_conditions.hpp, svd_norm_goodness.hpp) at rational
-// points: quantifier-free formulas by exact evaluation (logic::holds) at random points; quantified levels by
-// QEPCAD B and Z3 on the sentence with the point substituted, at points on both sides of each property.
-#include "experiments/claims/local/goodness_formulas.hpp"
+// The local claims' first-order encodings (experiments/proofs/goodness_formulas.hpp, experiments/claims/local/
+// printed_conditions.hpp) against the suite's exact evaluators (theory/local/goodness.hpp,
+// thesis_conditions.hpp, svd_norm_goodness.hpp) at rational points: the printed conditions by exact evaluation
+// (logic::holds) at random points; quantified levels by QEPCAD B and Z3 on the sentence with the point substituted,
+// at points on both sides of each property. The quantifier-free levels: checks/proofs/goodness_formulas_test.cpp.
+#include "experiments/claims/local/printed_conditions.hpp"
 #include "experiments/proofs/decide_sentence.hpp"
+#include "experiments/proofs/goodness_formulas.hpp"
 #include "theory/local/goodness.hpp"
 #include "theory/local/svd_norm_goodness.hpp"
 #include "theory/local/thesis_conditions.hpp"
@@ -16,6 +18,11 @@ namespace {
 
 using affinterp::local::Mat2;
 using exact::Rational;
+using proofs::area_property;
+using proofs::norm_property;
+using proofs::PolyMat2;
+using proofs::svd_norm_property;
+using proofs::var;
 
 const PolyMat2 generic_B{{{var("a"), var("b")}, {var("c"), var("d")}}};
 
@@ -31,31 +38,6 @@ Mat2<Rational> matrix(Rational a, Rational b, Rational c, Rational d) {
 
 rc::Gen<Rational> quarter(int lo, int hi) {
   return rc::gen::map(rc::gen::inRange(lo, hi + 1), [](int k) { return Rational(k) / 4; });
-}
-
-rc::Gen<Mat2<Rational>> quarter_matrix() {
-  return rc::gen::map(
-      rc::gen::tuple(quarter(-12, 12), quarter(-12, 12), quarter(-12, 12), quarter(-12, 12)),
-      [](const auto& e) { return matrix(std::get<0>(e), std::get<1>(e), std::get<2>(e), std::get<3>(e)); });
-}
-
-RC_GTEST_PROP(LocalFormulas, BlendPolynomialsAreTheSuitesOwn, ()) {
-  const Mat2<Rational> B = *quarter_matrix();
-  const Rational t = *quarter(-8, 8), v1 = *quarter(-8, 8), v2 = *quarter(-8, 8);
-  logic::Point p = point_of(B);
-  p["t"] = t;
-  p["v1"] = v1;
-  p["v2"] = v2;
-  RC_ASSERT(det_of_blend(generic_B, "t").evaluate(p) == affinterp::local::blend_determinant(B)(t));
-  const Mat2<Rational> A_t = affinterp::local::scaled(Rational(1 - t), affinterp::local::identity2<Rational>()) +
-                             affinterp::local::scaled(t, B);
-  const affinterp::local::Vec2<Rational> w = A_t.lazyProduct(affinterp::local::Vec2<Rational>(v1, v2));
-  RC_ASSERT(norm_squared_of_blend(generic_B, var("v1"), var("v2"), "t").evaluate(p) == w(0) * w(0) + w(1) * w(1));
-}
-
-RC_GTEST_PROP(LocalFormulas, AreaLevelEIsDefinition221, ()) {
-  const Mat2<Rational> B = *quarter_matrix();
-  RC_ASSERT(logic::holds(area_property(generic_B, "E"), point_of(B)) == affinterp::local::good_for_area(B));
 }
 
 RC_GTEST_PROP(LocalFormulas, ConditionsAreTheThesisConditions, ()) {

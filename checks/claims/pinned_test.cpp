@@ -1,7 +1,11 @@
 // The pinned verdicts of pinned_verdicts.txt (AFFINTERP_PINNED_VERDICTS): every claim the program declares has
 // exactly one line there, every line names a declared claim (a claim file the linker dropped fails here), and
 // each claim still reaches its pinned verdict at the quick size; a claim marked `measured` must reach a
-// measurement's verdict.
+// measurement's verdict. And the same seed gives the same claims.json entry, apart from timings, on one thread
+// and on two: each check runs twice, once per thread count, in the claim's own test process (so that ctest
+// spreads the catalogue over the cores). The proofs' answers are read from the committed transcripts.
+#include "experiments/claims/claims_json.hpp"
+#include "experiments/claims/proof_strength.hpp"
 #include "experiments/claims/registry.hpp"
 
 #include <gtest/gtest.h>
@@ -79,20 +83,41 @@ TEST(PinnedVerdicts, EveryClaimSaysHowStrongItsVerdictIs) {
     EXPECT_NE(claim.strength, Strength::unstated) << claim.id << " declares no strength (grid, sample, ...)";
 }
 
+/// The entry as claims.json writes it, less its timings. (Text, not JSON values: a NaN in the evidence is
+/// written as null, and compares unequal to itself as a value.)
+std::string without_timings(const Claim& claim, const Outcome& outcome) {
+  nlohmann::json entry = to_json({&claim, outcome, 0, {}});
+  entry.erase("seconds");
+  entry["evidence"].erase("measurements");
+  if (entry["proof"].is_object())
+    for (auto& sentence : entry["proof"]["sentences"]) {
+      sentence.erase("seconds");
+      for (auto& run : sentence["runs"]) run.erase("seconds");
+    }
+  return entry.dump(1);
+}
+
+Outcome check_on(const Claim& claim, unsigned threads) {
+  RunContext run;
+  run.size = Size::quick;
+  run.threads = threads;
+  return claim.check(run.for_claim(claim.id));
+}
+
 class PinnedVerdict : public testing::TestWithParam<Pin> {};
 
-TEST_P(PinnedVerdict, StillHolds) {
+TEST_P(PinnedVerdict, StillHoldsAndIsTheSameOnOneAndTwoThreads) {
   const Pin& pin = GetParam();
   const Claim* claim = registered_claims().find(pin.id);
   ASSERT_NE(claim, nullptr) << pin.id << " is pinned but not declared";
   ASSERT_TRUE(claim->check) << pin.id << " is pinned but has no check";
-  RunContext run;
-  run.size = Size::quick;
-  run.threads = 2;
-  const Outcome outcome = claim->check(run.for_claim(claim->id));
-  if (outcome.strength == Strength::proved) {
+  const Outcome outcome = check_on(*claim, 2);
+  EXPECT_EQ(without_timings(*claim, check_on(*claim, 1)), without_timings(*claim, outcome))
+      << pin.id << " is not deterministic";
+  if (is_proved(outcome.strength)) {
     ASSERT_TRUE(outcome.proof.has_value()) << pin.id << " says proved but carries no proof";
-    EXPECT_GE(outcome.proof->checked_by.size(), 2u) << pin.id << ": a proof needs two independent deciders";
+    EXPECT_EQ(proof_strength(*outcome.proof), outcome.strength)
+        << pin.id << ": the strength is the proof's, computed from what its checkers answered";
   }
   if (pin.verdict) {
     EXPECT_EQ(to_string(outcome.verdict), to_string(*pin.verdict))

@@ -1,5 +1,6 @@
-// A user's program against the installed affinterp: one call into each compiled part of
-// affinterp::theory (and of affinterp::origin when installed), checked against known answers.
+// A user's program against the affinterp package (installed, or its build tree): one call into each
+// compiled part of affinterp::theory (and of affinterp::origin when the package has it), checked against
+// known answers.
 #include "theory/global/interpolation.hpp"
 #include "theory/local/local.hpp"
 #include "theory/sym3/affinterp.hpp"
@@ -54,6 +55,6 @@ int main() {
              affinterp::certified::relative_error(E, certified.value).upper() < 1e-15,
          "certified exponential");
 #endif
-  std::puts(failures == 0 ? "consumer: affinterp::theory works from its install" : "consumer: FAILED");
+  std::puts(failures == 0 ? "consumer: affinterp::theory works as a package" : "consumer: FAILED");
   return failures == 0 ? 0 : 1;
 }

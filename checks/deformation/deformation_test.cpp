@@ -1,7 +1,6 @@
 // The 3D deformation pipeline of the thesis's application (theory/deformation/deformation.hpp) on a small
 // generated mesh: it reproduces the source at t = 0 and the target at t = 1.
 #include "theory/deformation/deformation.hpp"
-#include "experiments/inputs/sym3/off_file.hpp"
 #include "experiments/inputs/sym3/pose.hpp"
 #include "theory/linalg/symmetric.hpp"
 
@@ -71,19 +70,6 @@ TEST(Deformation3, RejectsMismatchedAndDegenerateTargets) {
   Mesh3 other = source;
   other.triangles.col(0).reverseInPlace();
   EXPECT_THROW(Deformation3(source, other), std::invalid_argument);
-}
-
-TEST(ReadOff, ReadsPolygonsAsTriangleFansAndRejectsGarbage) {
-  const auto dir = std::filesystem::temp_directory_path();
-  {
-    std::ofstream(dir / "affinterp_quad.off") << "OFF\n# a unit square\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n";
-  }
-  const Mesh3 quad = read_off(dir / "affinterp_quad.off");
-  EXPECT_EQ(quad.vertex_count(), 4);
-  EXPECT_EQ(quad.triangle_count(), 2);
-  { std::ofstream(dir / "affinterp_bad.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"; }
-  EXPECT_THROW(read_off(dir / "affinterp_bad.off"), std::runtime_error);
-  EXPECT_THROW(read_off(dir / "affinterp_missing.off"), std::runtime_error);
 }
 
 }  // namespace

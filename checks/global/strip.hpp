@@ -1,10 +1,13 @@
 #pragma once
-// Small test shapes: a rectangular strip of triangles and its bend around an arc, built in the tests
-// themselves so that they need no files.
+// Small test shapes: a rectangular strip of triangles, its bend around an arc and its roll into a spiral,
+// built in the tests themselves so that they need no files; the options of `affinterp interpolate`.
 #include "experiments/inputs/shapes/grid.hpp"
+#include "theory/global/gauge.hpp"
 #include "theory/global/mesh.hpp"
+#include "theory/global/options.hpp"
 
 #include <cmath>
+#include <numbers>
 
 namespace affinterp::global::testing {
 
@@ -40,6 +43,38 @@ inline Mesh bent(const Mesh& straight, double angle) {
     mesh.vertices.col(k) = Eigen::Vector2d(r * std::sin(phi), radius - r * std::cos(phi));
   }
   return mesh;
+}
+
+/// A strip of cols × rows quads, `length` × 2·length/18.8 (issue 19's 18.8 × 2 strip at any resolution and
+/// in any units), rolled 1.5 turns: its axis bent along an arc of radius length / 3π with its width
+/// outwards, so that no triangle flips.
+struct Spiral {
+  Mesh source, target;
+};
+inline Spiral spiral(int cols, int rows, double length = 18.8) {
+  Mesh straight = strip(cols, rows);
+  straight.vertices.row(0) *= length / cols;
+  straight.vertices.row(1) *= 2 * length / 18.8 / rows;
+  Mesh inner = straight;
+  inner.vertices.row(1).array() -= 2 * length / 18.8;  // y ∈ [−width, 0]: bent() puts y = 0 on the arc
+  Spiral s{straight, bent(inner, 3 * std::numbers::pi)};
+  return s;
+}
+
+/// The options of `affinterp interpolate`: area weights, the straight barycentre locus, the default gauge.
+inline InterpolationOptions cli_options(Energy energy, const Spiral& s) {
+  InterpolationOptions options;
+  options.energy = energy;
+  options.area_weighted = true;
+  options.constraints.barycentre = BarycentreLocus{};
+  if (const auto edge = default_edge_direction(s.source, s.target, options)) options.constraints.edges.push_back(*edge);
+  return options;
+}
+
+inline double box_size(const Mesh& a, const Mesh& b) {
+  Eigen::Matrix2Xd both(2, a.vertex_count() + b.vertex_count());
+  both << a.vertices, b.vertices;
+  return (both.rowwise().maxCoeff() - both.rowwise().minCoeff()).maxCoeff();
 }
 
 }  // namespace affinterp::global::testing

@@ -79,6 +79,27 @@ TEST(OffReader, RefusesBadFilesNamingTheLine) {
             "in.obj:3: z = 1e-300 is not 0: only planar meshes (z = 0) are read");
 }
 
+// The 3D surfaces of thesis Fig. 3.3 go through the same OFF reader: z kept, polygons split into fans.
+TEST(OffReader, ReadsSurfacesInSpaceSplittingPolygonsIntoFans) {
+  const sym3::Mesh3 square =
+      io::parse_off_surface("OFF\n# a unit square\n4 1 0\n0 0 0\n1 0 0\n1 1 0.5\n0 1 0\n4 0 1 2 3\n", "sq.off");
+  EXPECT_EQ(square.vertex_count(), 4);
+  ASSERT_EQ(square.triangle_count(), 2);
+  EXPECT_EQ(square.vertices.col(2), Eigen::Vector3d(1, 1, 0.5));
+  EXPECT_EQ(square.triangles.col(0), Eigen::Vector3i(0, 1, 2));
+  EXPECT_EQ(square.triangles.col(1), Eigen::Vector3i(0, 2, 3));
+  const auto surface_error = [](const std::string& text) { return error_of(io::parse_off_surface, text); };
+  EXPECT_EQ(surface_error("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"),
+            "in.obj:6: face 0: vertex index 7 is out of range (3 vertices)");
+  EXPECT_EQ(surface_error("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n"),
+            "in.obj:6: face 0 has 2 vertices: at least 3 are needed");
+  EXPECT_EQ(surface_error("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2\n"),
+            "in.obj:6: face 0: expected 4 vertex indices after the size");
+  EXPECT_EQ(surface_error("OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n"), "in.obj:4: vertex 1: 'nan' is not finite");
+  EXPECT_EQ(surface_error("OFF\n0 0 0\n"), "in.obj:2: empty mesh: no vertices or no faces");
+  EXPECT_THROW(io::read_off_surface("/nonexistent/dragon.off"), io::MeshFileError);
+}
+
 TEST(MeshFile, WritesObjThatReadsBackExactly) {
   global::Mesh mesh;
   mesh.vertices.resize(2, 3);

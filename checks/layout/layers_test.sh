@@ -13,10 +13,11 @@ declare -A allowed=(
   [plots]="theory plots"
   [experiments/support]="experiments/support"
   [experiments/inputs]="theory experiments/support experiments/inputs"
+  [experiments/bench]="experiments/support experiments/bench"
   [experiments/proofs]="theory experiments/support experiments/proofs"
-  [experiments/claims]="theory reports plots experiments/support experiments/inputs experiments/proofs experiments/claims"
+  [experiments/claims]="theory reports plots experiments/support experiments/inputs experiments/bench experiments/proofs experiments/claims"
   [experiments/python]="theory experiments/support experiments/inputs experiments/proofs experiments/python"
-  [experiments/apps]="theory reports plots experiments/support experiments/inputs experiments/proofs experiments/claims experiments/apps"
+  [experiments/apps]="theory reports plots experiments/support experiments/inputs experiments/bench experiments/proofs experiments/claims experiments/apps"
 )
 
 failures=0

@@ -46,7 +46,7 @@ TEST(SvdNormGoodness, AtPiMultiplesDecidesTheQuarterTurn) {
 TEST(SvdNormGoodness, TheSamplersMisclassifiedGridCaseFailsAlongAnExplicitDirection) {
   // x = 1/8, y = 1/4, β = 2π·47/48: the 96 × 96 sampler calls it good; G(1) < 0.
   EXPECT_FALSE(svd_good_for_norm_at_pi_multiple(Rational(1) / 8, Rational(1) / 4, Rational(47) / 24));
-  // The direction of the research notes (φ = −5.49916364201): ‖A_s(t)v‖² falls near t = 0 and rises near 1.
+  // A direction as in Lemma L9's proof (φ = −5.49916364201): ‖A_s(t)v‖² falls near t = 0 and rises near 1.
   const SvdHomotopy<Real50> A{{Real50(0), Real50(1) / 8, Real50(1) / 4, 2 * pi<Real50>() * 47 / 48}};
   const Real50 phi("-5.49916364201");
   const Vec2<Real50> v(cos(phi), sin(phi));

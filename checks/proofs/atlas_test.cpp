@@ -1,7 +1,6 @@
 // The atlas conditions against the suite's own exact deciders (theory/local/goodness.hpp) at random rational
 // points: the encoder and the exact evaluators agree (issue 10, item 6).
 #include "experiments/proofs/atlas.hpp"
-#include "experiments/proofs/goodness_levels.hpp"
 #include "theory/local/goodness.hpp"
 
 #include <gtest/gtest.h>
@@ -45,18 +44,4 @@ TEST(Atlas, EightCellsWithTheirVariables) {
   EXPECT_EQ(atlas_cell(Homotopy::svd, Notion::norm).variables, (std::vector<std::string>{"x", "y", "beta"}));
   EXPECT_EQ(atlas_cell(Homotopy::exp_log, Notion::area).id(), "exp-log.area");
   EXPECT_FALSE(suite_says_good(atlas_cell(Homotopy::svd, Notion::norm), {{"x", 1}, {"y", 2}, {"beta", 0}}));
-}
-
-// The encoder's quantifier-free area property (level E, Lemmas L1, L2) against goodness.hpp's exact decision.
-RC_GTEST_PROP(GoodnessLevels, AreaLevelEAgreesWithTheSuite, ()) {
-  using affinterp::logic::Polynomial;
-  const PolyMat2 A{
-      {{Polynomial::variable("a"), Polynomial::variable("b")}, {Polynomial::variable("c"), Polynomial::variable("d")}}};
-  const affinterp::logic::Point p{{"a", *small_rational(-32)},
-                                  {"b", *small_rational(-32)},
-                                  {"c", *small_rational(-32)},
-                                  {"d", *small_rational(-32)}};
-  affinterp::local::Mat2<Rational> B;
-  B << p.at("a"), p.at("b"), p.at("c"), p.at("d");
-  RC_ASSERT(affinterp::logic::holds(area_level_E(A), p) == affinterp::local::good_for_area<Rational>(B));
 }

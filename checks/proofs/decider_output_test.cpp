@@ -1,4 +1,5 @@
-// Reading QEPCAD B's and Z3's outputs, on outputs they printed (research runs), without running them.
+// Reading QEPCAD B's, Z3's and cvc5's outputs, on outputs they printed, without running them. A transcript with
+// an error, a warning or a failure anywhere answers nothing (issue 17).
 #include "experiments/proofs/decider_output.hpp"
 
 #include <gtest/gtest.h>
@@ -65,7 +66,8 @@ TEST(ParseQepcad, ExactSamplePoint) {
 
 TEST(ParseQepcad, FailuresAreUnknownWithTheReason) {
   EXPECT_EQ(parse_qepcad("Failure occurred in:    IUPRC\nPrime list exhausted\n", {"x"}).reason,
-            "qepcad: Prime list exhausted");
+            "qepcad: Failure occurred in:    IUPRC");
+  EXPECT_EQ(parse_qepcad("\nPrime list exhausted\n", {"x"}).reason, "qepcad: Prime list exhausted");
   EXPECT_EQ(parse_qepcad("\n\nToo few cells reclaimed.\n", {"x"}).reason, "qepcad: Too few cells reclaimed.");
   EXPECT_EQ(parse_qepcad("terminate called after throwing an instance of 'std::bad_alloc'\n", {"x"}).reason,
             "qepcad: out of memory (address-space cap)");
@@ -82,7 +84,7 @@ TEST(ParseQepcad, AnAnswerOverAnInvalidProjectionIsUnknown) {
       "may not be valid.\n\nAn equivalent quantifier-free formula:\n\nFALSE\n\n";
   const DeciderAnswer a = parse_qepcad(out, {"x", "y", "h"});
   EXPECT_EQ(a.result, SetResult::unknown);
-  EXPECT_NE(a.reason.find("McCallum projection may not be valid"), std::string::npos) << a.reason;
+  EXPECT_EQ(a.reason, "qepcad: WARNING! A projection factor is everywhere zero in the cylinder");
 }
 
 TEST(ParseZ3, ModelValues) {
@@ -98,7 +100,7 @@ TEST(ParseZ3, ModelValues) {
     (/ (- 3.0) 4.0))
 )
 )";
-  const DeciderAnswer a = parse_z3(out);
+  const DeciderAnswer a = parse_smt(out, "z3");
   EXPECT_EQ(a.result, SetResult::non_empty);
   ASSERT_TRUE(a.witness);
   EXPECT_TRUE(a.witness->exact);
@@ -107,19 +109,50 @@ TEST(ParseZ3, ModelValues) {
 }
 
 TEST(ParseZ3, RootObjectsAreApproximated) {
-  const DeciderAnswer a = parse_z3("sat\n(\n  (define-fun r () Real\n    (root-obj (+ (* x x) (- 2)) 2))\n)\n");
+  const DeciderAnswer a = parse_smt("sat\n(\n  (define-fun r () Real\n    (root-obj (+ (* x x) (- 2)) 2))\n)\n", "z3");
   ASSERT_TRUE(a.witness);
   EXPECT_FALSE(a.witness->exact);
   EXPECT_NEAR(static_cast<double>(a.witness->point.at("r")), 1.41421356237, 1e-9);
-  const DeciderAnswer b = parse_z3("sat\n((define-fun r () Real (root-obj (+ (* x x) (- 2)) 1)))\n");
+  const DeciderAnswer b = parse_smt("sat\n((define-fun r () Real (root-obj (+ (* x x) (- 2)) 1)))\n", "z3");
   EXPECT_NEAR(static_cast<double>(b.witness->point.at("r")), -1.41421356237, 1e-9);
 }
 
-TEST(ParseZ3, UnsatUnknownTimeout) {
-  EXPECT_EQ(parse_z3("unsat\n(error \"line 9 column 10: model is not available\")\n").result, SetResult::empty);
-  EXPECT_EQ(parse_z3("unknown\n").reason, "z3: unknown");
-  EXPECT_EQ(parse_z3("timeout\n").reason, "z3: timeout");
-  EXPECT_EQ(parse_z3("").result, SetResult::unknown);
+TEST(ParseSmt, UnsatUnknownTimeout) {
+  EXPECT_EQ(parse_smt("unsat\n", "z3").result, SetResult::empty);
+  EXPECT_EQ(parse_smt("unsat\n", "cvc5").result, SetResult::empty);
+  EXPECT_EQ(parse_smt("unknown\n", "z3").reason, "z3: unknown");
+  EXPECT_EQ(parse_smt("timeout\n", "z3").reason, "z3: timeout");
+  EXPECT_EQ(parse_smt("", "z3").result, SetResult::unknown);
+}
+
+TEST(ParseSmt, AnErrorOrAResourceMessageAnywhereAnswersNothing) {
+  // Z3 and cvc5 on an input that asked for a model after "unsat" (the suite's inputs no longer do).
+  const DeciderAnswer z3 = parse_smt("unsat\n(error \"line 9 column 10: model is not available\")\n", "z3");
+  EXPECT_EQ(z3.result, SetResult::unknown);
+  EXPECT_EQ(z3.reason, "z3: (error \"line 9 column 10: model is not available\")");
+  EXPECT_EQ(parse_smt("unsat\n(error \"Cannot get model unless after a SAT or UNKNOWN response.\")\n", "cvc5").result,
+            SetResult::unknown);
+  EXPECT_EQ(parse_smt("cvc5 interrupted by timeout.\n", "cvc5").reason, "cvc5: cvc5 interrupted by timeout.");
+  EXPECT_EQ(parse_smt("sat\n(error \"out of memory\")\n", "z3").result, SetResult::unknown);
+  EXPECT_EQ(parse_smt("sat\n((define-fun x () Real (/ (- 7) 4)))\n", "cvc5").result, SetResult::non_empty);
+}
+
+// The messages QEPCAD B printed in the transcripts of issue 17 (thesis.thm-2.2.1's level D and L sentences,
+// thesis.thm-2.2.3's beta0.cond-not-prop.D): each with a formula after it, and each an answer of nothing.
+TEST(ParseQepcad, AnErrorOrAWarningAnywhereAnswersNothing) {
+  const std::string answer = "\nAn equivalent quantifier-free formula:\n\nFALSE\n\n";
+  for (const std::string message : {"Error! Delineating polynomial should be added over cell(2,2)!",
+                                    "WARNING! A projection factor is everywhere zero in the cylinder ",
+                                    "Warning! Some 4-level projection factor is acting as a ",
+                                    "over the cell (3,8,4) of positive dimension.  The McCallum projection ",
+                                    "Failure occurred in:    GCSI (final check)", "Prime list exhausted"}) {
+    const DeciderAnswer a = parse_qepcad("Before Solution >\n" + message + "\n" + answer, {"x"});
+    EXPECT_EQ(a.result, SetResult::unknown) << message;
+    EXPECT_FALSE(a.reason.empty()) << message;
+  }
+  // The banner names Scott McCallum: not a warning.
+  EXPECT_EQ(parse_qepcad("Werner Krandick, Richard Liska, Scott McCallum,        \n" + answer, {"x"}).result,
+            SetResult::empty);
 }
 
 TEST(WithoutTimings, DropsTheLinesThatVaryRunToRun) {

@@ -1,8 +1,5 @@
 #include "experiments/claims/claims_json.hpp"
 
-#include "experiments/claims/engine_scale.hpp"
-#include "experiments/claims/engine_speed.hpp"
-
 #include <chrono>
 #include <ctime>
 
@@ -25,10 +22,13 @@ nlohmann::json proof_json(const std::optional<Proof>& proof) {
                          {"result", s.result},
                          {"file", s.runs.empty() ? "" : s.runs.front().file},
                          {"seconds", s.runs.empty() ? 0.0 : s.runs.front().seconds},
+                         {"structural", s.structural},
                          {"runs", runs}});
   }
-  return {
+  nlohmann::json out = {
       {"scope", proof->scope}, {"method", proof->method}, {"checked_by", proof->checked_by}, {"sentences", sentences}};
+  if (!proof->cites.empty()) out["cites"] = proof->cites;
+  return out;
 }
 
 std::string utc_now() {
@@ -72,7 +72,7 @@ nlohmann::json to_json(const ClaimResult& result) {
 
 nlohmann::json claims_document(const ClaimRegistry& registry, const std::vector<ClaimResult>& results,
                                const RunContext& context, const nlohmann::json& environment,
-                               const nlohmann::json& previous) {
+                               const nlohmann::json& previous, const EngineTables& engine) {
   nlohmann::json claims = nlohmann::json::array();
   for (const Claim& claim : registry.claims()) {
     const nlohmann::json* entry = nullptr;
@@ -85,14 +85,10 @@ nlohmann::json claims_document(const ClaimRegistry& registry, const std::vector<
     if (entry != nullptr) claims.push_back(*entry);
   }
   return {
-      {"tool", "affinterp"},
-      {"generated_at", utc_now()},
-      {"seed", context.seed},
-      {"size", to_string(context.size)},
-      {"environment", environment},
-      {"claims", claims},
-      {"engine_speed", engine_speed(context.bench_dir / "bench_interp.json")},
-      {"engine_scale", engine_scale(context.bench_dir / "bench_scale.json", context)},
+      {"tool", "affinterp"},          {"generated_at", utc_now()},
+      {"seed", context.seed},         {"size", to_string(context.size)},
+      {"environment", environment},   {"claims", claims},
+      {"engine_speed", engine.speed}, {"engine_scale", engine.scale},
   };
 }
 

@@ -13,11 +13,16 @@ namespace affinterp::claims {
 /// figures, seconds.
 nlohmann::json to_json(const ClaimResult& result);
 
-/// The whole document, one entry per claim of `registry` in run order. When `previous` is an earlier
-/// document, its entries for claims not in `results` are kept, so that a run with --only updates just
-/// those claims.
+/// The global engine's tables as the run measured them (engine_speed.hpp, engine_scale.hpp; null: not measured).
+struct EngineTables {
+  nlohmann::json speed, scale;
+};
+
+/// The whole document, one entry per claim of `registry` in run order, and the engine's tables. When `previous`
+/// is an earlier document, its entries for claims not in `results` are kept, so that a run with --only updates
+/// just those claims.
 nlohmann::json claims_document(const ClaimRegistry& registry, const std::vector<ClaimResult>& results,
                                const RunContext& context, const nlohmann::json& environment,
-                               const nlohmann::json& previous);
+                               const nlohmann::json& previous, const EngineTables& engine);
 
 }  // namespace affinterp::claims

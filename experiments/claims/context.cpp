@@ -18,9 +18,11 @@ std::vector<std::string> RunSettings::figure_refs(const std::vector<std::string>
   return refs;
 }
 
+std::filesystem::path RunSettings::committed_answers() { return AFFINTERP_COMMITTED_ANSWERS; }
+
 proofs::SentenceFiles ClaimContext::proof_files() const {
   const std::string id(claim_id);
-  return {proof_dir.empty() ? std::filesystem::path() : proof_dir / id, "proofs/" + id};
+  return {proof_dir.empty() ? std::filesystem::path() : proof_dir / id, "proofs/" + id, answer_dir / id, plan};
 }
 
 std::string_view to_string(Size size) { return size == Size::quick ? "quick" : "full"; }

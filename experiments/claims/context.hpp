@@ -24,8 +24,16 @@ struct RunSettings {
   /// Where Google Benchmark JSON outputs are read from, for measured claims; empty means none.
   std::filesystem::path bench_dir;
   /// Where checks write the sentence files of their proofs, proof_dir/<claim id>/<name>.<ext> beside the
-  /// deciders' outputs; empty means a temporary folder per sentence, kept nowhere.
+  /// deciders' transcripts; empty means a temporary folder per sentence, kept nowhere.
   std::filesystem::path proof_dir;
+  /// The stored transcripts the proofs read their answers from, answer_dir/<claim id>/<name>.<tool>.out
+  /// (proofs as data: a check never starts a decider); this checkout's reports/proofs by default.
+  std::filesystem::path answer_dir = committed_answers();
+  /// When set, every decider run the proofs need is recorded here (`affinterp prove`).
+  proofs::ProofPlan* plan = nullptr;
+
+  /// This checkout's reports/proofs, where the committed transcripts are.
+  static std::filesystem::path committed_answers();
 
   /// `quick` under Size::quick, `full` under Size::full.
   template <class T>

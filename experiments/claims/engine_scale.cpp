@@ -1,13 +1,13 @@
 #include "experiments/claims/engine_scale.hpp"
 
-#include "experiments/claims/bench_results.hpp"
-#include "plots/figure.hpp"
-#include "plots/gnuplot_process.hpp"
+#include "experiments/bench/bench_results.hpp"
+#include "plots/engine_scale_curve.hpp"
 
 #include <algorithm>
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace affinterp::claims {
 namespace {
@@ -17,43 +17,29 @@ constexpr double target_triangles = 1e6, setup_target_ms = 5000, frame_F_target_
 
 bool at_most(const nlohmann::json& value, double target) { return value.is_number() && value.get<double>() <= target; }
 
-/// Time (ms) against triangles, log-log, one line per measured quantity.
+/// Time (ms) against triangles, log-log, one line per measured quantity (plots/engine_scale_curve.hpp).
 std::vector<std::string> draw_cost_curve(const RunSettings& settings, const nlohmann::json& rows) {
-  const std::vector<std::pair<std::string, std::string>> columns = {{"setup_F_ms", "set-up, E^F"},
-                                                                    {"setup_R_ms", "set-up, E^R"},
-                                                                    {"frame_F_ms", "one frame, E^F"},
-                                                                    {"frame_R_ms", "one frame, E^R"}};
-  plots::Figure figure(settings.figure_stem("engine-scale"));
-  std::string plot = "plot ";
-  for (std::size_t c = 0; c < columns.size(); ++c) {
-    plots::Table table;
+  std::vector<plots::CostSeries> series;
+  for (const auto& [key, title] :
+       {std::pair{"setup_F_ms", "set-up, E^F"}, std::pair{"setup_R_ms", "set-up, E^R"},
+        std::pair{"frame_F_ms", "one frame, E^F"}, std::pair{"frame_R_ms", "one frame, E^R"}}) {
+    plots::CostSeries& s = series.emplace_back(plots::CostSeries{title, {}});
     for (const auto& row : rows)
-      if (row[columns[c].first].is_number())
-        table.push_back({row["triangles"].get<double>(), row[columns[c].first].get<double>()});
-    figure.data("c" + std::to_string(c), table);
-    plot += std::string(c ? ", " : "") + "$c" + std::to_string(c) + " using 1:2 with linespoints title " +
-            plots::gnuplot_string(columns[c].second);
+      if (row[key].is_number()) s.points.push_back({row["triangles"].get<double>(), row[key].get<double>()});
   }
-  figure.size(900, 560).script(
-      "set logscale xy\nset xlabel 'triangles'\nset ylabel 'time (ms)'\nset key top left\n"
-      "set title 'global engine: cost against mesh size (bench\\_scale)'\n"
-      "set arrow from graph 0, first 5000 to graph 1, first 5000 nohead dt 2 lc rgb '#888888'\n"
-      "set arrow from graph 0, first 600 to graph 1, first 600 nohead dt 3 lc rgb '#888888'\n"
-      "set arrow from graph 0, first 100 to graph 1, first 100 nohead dt 4 lc rgb '#888888'\n"
-      "set label 'set-up target at 1M' at graph 0.7, first 5000 offset 0,0.6 tc rgb '#666666'\n"
-      "set label 'E^R frame target' at graph 0.7, first 600 offset 0,0.6 tc rgb '#666666'\n"
-      "set label 'E^F frame target' at graph 0.7, first 100 offset 0,0.6 tc rgb '#666666'\n" +
-      plot + "\n");
-  return RunSettings::figure_refs(figure.render());
+  return RunSettings::figure_refs(plots::draw_engine_scale(settings.figure_stem("engine-scale"), series,
+                                                           {{setup_target_ms, "set-up target at 1M"},
+                                                            {frame_R_target_ms, "E^R frame target"},
+                                                            {frame_F_target_ms, "E^F frame target"}}));
 }
 
 }  // namespace
 
 nlohmann::json engine_scale(const std::filesystem::path& bench_file, const RunSettings& settings) {
-  const std::optional<BenchResults> times = read_bench_results(bench_file, "real_time");
+  const std::optional<bench::BenchResults> times = bench::read_bench_results(bench_file, "real_time");
   if (!times) return nullptr;
-  const std::optional<BenchResults> cpu = read_bench_results(bench_file, "cpu_time");
-  const std::optional<BenchResults> peaks = read_bench_results(bench_file, "peak_MB");
+  const std::optional<bench::BenchResults> cpu = bench::read_bench_results(bench_file, "cpu_time");
+  const std::optional<bench::BenchResults> peaks = bench::read_bench_results(bench_file, "peak_MB");
   // scale_<setup|frame>/<energy>/<triangles>
   std::map<double, nlohmann::json> by_size;
   for (const auto& [name, ms] : times->median) {

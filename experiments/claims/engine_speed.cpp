@@ -1,8 +1,8 @@
 #include "experiments/claims/engine_speed.hpp"
 
-#include "experiments/claims/bench_results.hpp"
-#include "experiments/claims/measured.hpp"
+#include "experiments/claims/speed_verdict.hpp"
 
+#include <map>
 #include <optional>
 #include <string>
 
@@ -26,12 +26,20 @@ nlohmann::json interval(const Measured& m) {
 double identity(double x) { return x; }
 double per_second(double ms) { return 1000.0 / ms; }
 
+/// One energy's targets: met (reproduced) iff the set-up's and the frame rate's intervals lie in their bands;
+/// inconclusive without a set-up time.
+Verdict targets_verdict(const std::optional<Measured>& setup, const Measured& frames_per_s, const std::string& energy) {
+  if (!setup) return Verdict::inconclusive;
+  return all_of({verdict_of(*setup, {0, setup_target_ms}),
+                 verdict_of(frames_per_s, {frames_per_second_target(energy).value_or(0), kUnbounded})});
+}
+
 }  // namespace
 
 nlohmann::json engine_speed(const std::filesystem::path& bench_file) {
-  const std::optional<BenchResults> times = read_bench_results(bench_file, "real_time");
+  const std::optional<BenchResults> times = bench::read_bench_results(bench_file, "real_time");
   if (!times) return nullptr;
-  const std::optional<BenchResults> sizes = read_bench_results(bench_file, "triangles");
+  const std::optional<BenchResults> sizes = bench::read_bench_results(bench_file, "triangles");
   nlohmann::json table{{"file", bench_file.filename().string()},
                        {"machine", times->machine},
                        {"compiler", times->compiler},
@@ -45,14 +53,10 @@ nlohmann::json engine_speed(const std::filesystem::path& bench_file) {
     const std::optional<double> target = frames_per_second_target(energy);
     // Each target is met (reproduced) iff the 95% bootstrap interval of its median lies in its band.
     const Measured frames_per_s = measured_median(*times, name, per_second);
-    const Interval frames_band{target.value_or(0), kUnbounded}, setup_band{0, setup_target_ms};
-    Verdict verdict = Verdict::inconclusive;  // without a set-up time
-    nlohmann::json setup_ci;
-    if (setup_ms) {
-      const Measured setup = measured_median(*times, "setup/" + rest, identity);
-      setup_ci = interval(setup);
-      verdict = all_of({verdict_of(setup, setup_band), verdict_of(frames_per_s, frames_band)});
-    }
+    std::optional<Measured> setup;
+    if (setup_ms) setup = measured_median(*times, "setup/" + rest, identity);
+    const Verdict verdict = targets_verdict(setup, frames_per_s, energy);
+    const nlohmann::json setup_ci = setup ? interval(*setup) : nlohmann::json();
     table["mesh"] = mesh;
     if (const auto triangles = sizes ? (*sizes)["setup/" + rest] : std::nullopt) table["triangles"] = *triangles;
     table["rows"].push_back({
@@ -65,12 +69,45 @@ nlohmann::json engine_speed(const std::filesystem::path& bench_file) {
         {"frames_per_s_ci95", interval(frames_per_s)},
         {"target_frames_per_s", optional_number(target)},
         {"repetitions", frames_per_s.repetitions},
+        {"processes", frames_per_s.processes},
         {"baseline_ms", optional_number(baseline_ms)},
         {"speedup_vs_baseline", baseline_ms ? nlohmann::json(*baseline_ms / frame_ms) : nlohmann::json()},
         {"verdict", to_string(verdict)},
     });
   }
   return table;
+}
+
+nlohmann::json engine_speed_by_run(const std::vector<bench::RecordedRun>& runs) {
+  nlohmann::json rows = nlohmann::json::array();
+  std::map<std::string, std::vector<Verdict>> by_energy;
+  for (const bench::RecordedRun& run : runs)
+    for (const auto& [key, figure] : run.figures) {
+      if (!key.starts_with("frame/")) continue;  // frame/<energy>/<mesh>
+      const std::string rest = key.substr(6), energy = rest.substr(0, rest.find('/'));
+      const auto setup_figure = run.figures.find(bench::setup_key(rest));
+      std::optional<Measured> setup;
+      if (setup_figure != run.figures.end()) setup = setup_figure->second.measured;
+      const Verdict verdict = targets_verdict(setup, figure.measured, energy);
+      by_energy[energy].push_back(verdict);
+      rows.push_back({{"run", run.id},
+                      {"recorded", run.recorded},
+                      {"date", run.date},
+                      {"cpu", run.machine.value("cpu", nlohmann::json())},
+                      {"cores", run.machine.value("cores", nlohmann::json())},
+                      {"energy", energy},
+                      {"mesh", rest.substr(rest.find('/') + 1)},
+                      {"frames_per_s", figure.measured.value},
+                      {"frames_per_s_ci95", interval(figure.measured)},
+                      {"target_frames_per_s", optional_number(frames_per_second_target(energy))},
+                      {"setup_ms", setup ? nlohmann::json(setup->value) : nlohmann::json()},
+                      {"setup_ms_ci95", setup ? interval(*setup) : nlohmann::json()},
+                      {"processes", figure.measured.processes},
+                      {"verdict", to_string(verdict)}});
+    }
+  nlohmann::json across = nlohmann::json::object();
+  for (const auto& [energy, verdicts] : by_energy) across[energy] = to_string(across_runs(verdicts));
+  return {{"rows", rows}, {"across_runs", across}, {"rule", kAcrossRunsRule}};
 }
 
 }  // namespace affinterp::claims

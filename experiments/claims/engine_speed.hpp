@@ -3,9 +3,12 @@
 // "Efficiency"): per energy the set-up time, the time per frame after set-up and, where measured, the
 // refactor-every-frame baseline of the same run, against the targets of the engine's specification —
 // E^F ≥ 150 frames/s, E^R ≥ 25 frames/s, set-up ≤ 0.2 s, all single-threaded.
+#include "experiments/bench/history.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <vector>
 
 namespace affinterp::claims {
 
@@ -16,5 +19,11 @@ namespace affinterp::claims {
 /// repetitions) decide each row as the speed claims are decided: "reproduced" (targets met) when every
 /// interval lies within its target, "not-reproduced" when one lies outside, else "inconclusive".
 nlohmann::json engine_speed(const std::filesystem::path& bench_file);
+
+/// The same targets on every recorded run (bench/history.hpp), each run decided alone and the runs together by
+/// across_runs (speed_verdict.hpp): {"rows": [{"run", "recorded", "date", "cpu", "cores", "energy", "mesh",
+/// "frames_per_s", "frames_per_s_ci95", "target_frames_per_s", "setup_ms", "setup_ms_ci95", "processes",
+/// "verdict"}], "across_runs": {energy: verdict}, "rule"}.
+nlohmann::json engine_speed_by_run(const std::vector<bench::RecordedRun>& runs);
 
 }  // namespace affinterp::claims

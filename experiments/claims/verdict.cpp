@@ -6,7 +6,7 @@
 namespace affinterp::claims {
 
 namespace {
-constexpr std::array<std::pair<Verdict, std::string_view>, 7> names{{
+constexpr std::array<std::pair<Verdict, std::string_view>, 8> names{{
     {Verdict::pending, "pending"},
     {Verdict::confirmed, "confirmed"},
     {Verdict::refuted, "refuted"},
@@ -14,6 +14,7 @@ constexpr std::array<std::pair<Verdict, std::string_view>, 7> names{{
     {Verdict::reproduced, "reproduced"},
     {Verdict::not_reproduced, "not-reproduced"},
     {Verdict::inconclusive, "inconclusive"},
+    {Verdict::machine_dependent, "machine-dependent"},
 }};
 }  // namespace
 
@@ -30,9 +31,11 @@ std::optional<Verdict> parse_verdict(std::string_view text) {
 }
 
 namespace {
-constexpr std::array<std::pair<Strength, std::string_view>, 6> strength_names{{
+constexpr std::array<std::pair<Strength, std::string_view>, 8> strength_names{{
     {Strength::unstated, "unstated"},
     {Strength::proved, "proved"},
+    {Strength::proved_one_decider, "proved-one-decider"},
+    {Strength::proved_citing, "proved-citing"},
     {Strength::exact_counterexample, "exact-counterexample"},
     {Strength::grid, "grid"},
     {Strength::sample, "sample"},

@@ -7,13 +7,14 @@
 namespace affinterp::claims {
 
 enum class Verdict {
-  pending,         ///< no check implemented yet
-  confirmed,       ///< holds on everything tried (exact proof-by-computation, or a stated sweep)
-  refuted,         ///< fails; a re-verifiable counterexample is attached
-  corrected,       ///< fails as printed, holds after the stated correction
-  reproduced,      ///< a measured figure (speed-up, error level) matches the paper's
-  not_reproduced,  ///< a measured figure does not match the paper's
-  inconclusive,    ///< could not be decided; the summary says why and what would decide it
+  pending,            ///< no check implemented yet
+  confirmed,          ///< holds on everything tried (exact proof-by-computation, or a stated sweep)
+  refuted,            ///< fails; a re-verifiable counterexample is attached
+  corrected,          ///< fails as printed, holds after the stated correction
+  reproduced,         ///< a measured figure (speed-up, error level) matches the paper's
+  not_reproduced,     ///< a measured figure does not match the paper's
+  inconclusive,       ///< could not be decided; the summary says why and what would decide it
+  machine_dependent,  ///< a measured figure reproduced on one recorded machine and not on another (issue 21)
 };
 
 std::string_view to_string(Verdict v);
@@ -22,8 +23,10 @@ std::optional<Verdict> parse_verdict(std::string_view text);
 /// How strong a verdict is: every check states it, and the report shows it beside the verdict.
 enum class Strength {
   unstated,              ///< the check has not said (the pinned-verdict test fails on it)
-  proved,                ///< decided for all reals: the claim, and its correction if any, by two independent
-                         ///< deciders (Outcome::proof), or an identity by two independent checkers
+  proved,                ///< decided for all reals: every sentence of the proof (Outcome::proof) answered by two
+                         ///< independent deciders, every identity by two independent checkers, none with an error
+  proved_one_decider,    ///< as proved, but some sentence answered by one decider only (the proof names it)
+  proved_citing,         ///< as proved, with an external published theorem as a step (the proof cites it)
   exact_counterexample,  ///< fails at an exact counterexample anyone can re-verify; a correction, if any, is
                          ///< checked on the stated grid or sample only
   grid,                  ///< checked on the stated grid only

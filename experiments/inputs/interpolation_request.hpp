@@ -2,8 +2,8 @@
 // What a caller of the global interpolation (Kaji §4) asks for, in the words of the `affinterp interpolate`
 // options, with their defaults: the one place the CLI and the Python module turn a request into the
 // engine's InterpolationOptions, so that both give the same vertices for the same input.
-//   local homotopy A_i(t) (Kaji §3): exp (eq. 3, the default), polar (eq. 2), linear, svd
-//   energy E_i: F, S, R (eq. 4, the default), blend;  area weights on;  not symmetrised
+//   local homotopy A_i(t) (Kaji §3): exp (eq. 3), polar (eq. 2), linear, svd
+//   energy E_i: F, S, R (eq. 4), blend;  area weights;  symmetrisation — each defaulting as the engine does
 //   constraints C: the syntax of constraint_spec.hpp; the barycentre follows the straight line by default,
 //   and with E^S, E^R or a blend and no vertex or edge constraint one edge fixes rotation and scale
 //   (theory/global/gauge.hpp)
@@ -14,14 +14,18 @@
 
 namespace affinterp::io {
 
+/// Every default is the engine's (global::InterpolationOptions{}): one place decides it, the CLI and Python read it.
 struct InterpolationRequest {
-  std::string local = "exp", energy = "R", rotation_branch = "consistent";
-  double blend_weight = 0.5;
+  std::string local = global::to_string(global::InterpolationOptions{}.homotopy),
+              energy = global::to_string(global::InterpolationOptions{}.energy),
+              rotation_branch = global::to_string(global::InterpolationOptions{}.rotation_branch);
+  double blend_weight = global::InterpolationOptions{}.blend_weight;
   Eigen::VectorXd blend_weights;  ///< w_i per triangle; empty: blend_weight for every triangle
-  bool area_weights = true, symmetric = false;
+  bool area_weights = global::InterpolationOptions{}.area_weighted, symmetric = global::InterpolationOptions{}.symmetric;
   std::vector<std::string> pins, loci, edges;
+  /// The gauge of translation: a request's choice, as the engine's Constraints are what its caller asks for.
   std::string barycentre = "linear";
-  double t_begin = 0.0, t_end = 1.0;  ///< the times the engine accepts
+  double t_begin = global::InterpolationOptions{}.t_begin, t_end = global::InterpolationOptions{}.t_end;
 };
 
 /// The engine's options for the pair (source counter-clockwise, as check_mesh_pair leaves it), the default

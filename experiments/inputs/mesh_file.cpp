@@ -6,6 +6,7 @@
 #include <cctype>
 #include <charconv>
 #include <climits>
+#include <cmath>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -127,6 +128,93 @@ global::Mesh assemble(std::vector<double>& coordinates, std::vector<int>& corner
   return mesh;
 }
 
+/// The whole of `file`; MeshFileError when it is missing or cannot be read.
+std::string file_text(const fs::path& file) {
+  const std::string name = file.string();
+  std::error_code error;
+  if (!fs::is_regular_file(file, error)) throw MeshFileError(name + ": no such file");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw MeshFileError(name + ": cannot be opened");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw MeshFileError(name + ": cannot be read");
+  return text;
+}
+
+/// What an OFF file is read as.
+enum class OffSurface {
+  planar,   ///< a global::Mesh: z = 0, triangles only
+  spatial,  ///< a sym3::Mesh3 (thesis Fig. 3.3): z kept, a polygon split into the fan of its first corner
+};
+
+/// The OFF reader: appends 2 (planar) or 3 (spatial) coordinates per vertex to `coordinates` and 3
+/// corners per triangle to `corners`.
+void parse_off_into(std::string_view text, const std::string& name, OffSurface surface,
+                    std::vector<double>& coordinates, std::vector<int>& corners) {
+  const bool planar = surface == OffSurface::planar;
+  LineReader in(text, name);
+  if (!in.next()) in.fail_at_end("empty file: expected an 'OFF' header");
+  if (in.tokens().front() != "OFF")
+    in.fail("expected the 'OFF' header, found " + LineReader::quoted(in.tokens().front()));
+  std::vector<std::string_view> counts(in.tokens().begin() + 1, in.tokens().end());
+  if (counts.empty()) {
+    if (!in.next()) in.fail_at_end("file ends before the counts line 'vertices faces [edges]'");
+    counts = in.tokens();
+  }
+  if (counts.size() != 2 && counts.size() != 3) in.fail("expected the counts 'vertices faces [edges]'");
+  const long long vertex_count = in.integer(counts[0]), face_count = in.integer(counts[1]);
+  if (vertex_count < 0 || face_count < 0) in.fail("negative count");
+  if (vertex_count > max_count || face_count > max_count) in.fail("count beyond 2^31 - 1");
+  if (!planar && (vertex_count == 0 || face_count == 0)) in.fail("empty mesh: no vertices or no faces");
+
+  const std::size_t dimension = planar ? 2 : 3;
+  coordinates.reserve(dimension * static_cast<std::size_t>(std::min(vertex_count, 1LL << 20)));
+  for (long long k = 0; k < vertex_count; ++k) {
+    if (!in.next())
+      in.fail_at_end("file ends after " + std::to_string(k) + " of " + std::to_string(vertex_count) + " vertices");
+    if (in.tokens().size() != 3) in.fail("vertex " + std::to_string(k) + ": expected 'x y z'");
+    if (planar) {
+      read_point(in, 0, coordinates);
+      continue;
+    }
+    for (const std::string_view token : in.tokens()) {
+      const double x = in.number(token);
+      if (!std::isfinite(x))
+        in.fail("vertex " + std::to_string(k) + ": " + LineReader::quoted(token) + " is not finite");
+      coordinates.push_back(x);
+    }
+  }
+  corners.reserve(3 * static_cast<std::size_t>(std::min(face_count, 1LL << 20)));
+  std::vector<int> face;
+  for (long long i = 0; i < face_count; ++i) {
+    if (!in.next())
+      in.fail_at_end("file ends after " + std::to_string(i) + " of " + std::to_string(face_count) + " faces");
+    const auto& tokens = in.tokens();
+    const std::string face_name = "face " + std::to_string(i);
+    const long long size = in.integer(tokens[0]);
+    if (planar && size != 3)
+      in.fail(face_name + " has " + LineReader::printable(tokens[0]) +
+              " vertices: only triangles are read (polygons are not triangulated)");
+    if (size < 3) in.fail(face_name + " has " + LineReader::printable(tokens[0]) + " vertices: at least 3 are needed");
+    if (static_cast<long long>(tokens.size()) < 1 + size)
+      in.fail(face_name + ": expected " +
+              (size == 3 ? std::string("'3 a b c'") : std::to_string(size) + " vertex indices after the size"));
+    face.clear();
+    for (std::size_t c = 1; c < tokens.size(); ++c) {
+      if (static_cast<long long>(c) > size) {
+        in.number(tokens[c]);  // a colour: checked to be numeric, not used
+        continue;
+      }
+      const long long k = in.integer(tokens[c]);
+      if (k < 0 || k >= vertex_count)
+        in.fail(face_name + ": vertex index " + std::to_string(k) + " is out of range (" +
+                std::to_string(vertex_count) + " vertices)");
+      face.push_back(static_cast<int>(k));
+    }
+    for (std::size_t c = 1; c + 1 < face.size(); ++c) corners.insert(corners.end(), {face[0], face[c], face[c + 1]});
+  }
+  if (in.next()) in.fail("unexpected content after the last face");
+}
+
 }  // namespace
 
 global::Mesh parse_obj(std::string_view text, const std::string& name) {
@@ -177,53 +265,21 @@ global::Mesh parse_obj(std::string_view text, const std::string& name) {
 }
 
 global::Mesh parse_off(std::string_view text, const std::string& name) {
-  LineReader in(text, name);
-  if (!in.next()) in.fail_at_end("empty file: expected an 'OFF' header");
-  if (in.tokens().front() != "OFF")
-    in.fail("expected the 'OFF' header, found " + LineReader::quoted(in.tokens().front()));
-  std::vector<std::string_view> counts(in.tokens().begin() + 1, in.tokens().end());
-  if (counts.empty()) {
-    if (!in.next()) in.fail_at_end("file ends before the counts line 'vertices faces [edges]'");
-    counts = in.tokens();
-  }
-  if (counts.size() != 2 && counts.size() != 3) in.fail("expected the counts 'vertices faces [edges]'");
-  const long long vertex_count = in.integer(counts[0]), face_count = in.integer(counts[1]);
-  if (vertex_count < 0 || face_count < 0) in.fail("negative count");
-  if (vertex_count > max_count || face_count > max_count) in.fail("count beyond 2^31 - 1");
-
   std::vector<double> coordinates;
-  coordinates.reserve(2 * static_cast<std::size_t>(std::min(vertex_count, 1LL << 20)));
-  for (long long k = 0; k < vertex_count; ++k) {
-    if (!in.next())
-      in.fail_at_end("file ends after " + std::to_string(k) + " of " + std::to_string(vertex_count) + " vertices");
-    if (in.tokens().size() != 3) in.fail("vertex " + std::to_string(k) + ": expected 'x y z'");
-    read_point(in, 0, coordinates);
-  }
   std::vector<int> corners;
-  corners.reserve(3 * static_cast<std::size_t>(std::min(face_count, 1LL << 20)));
-  for (long long i = 0; i < face_count; ++i) {
-    if (!in.next())
-      in.fail_at_end("file ends after " + std::to_string(i) + " of " + std::to_string(face_count) + " faces");
-    const auto& tokens = in.tokens();
-    const long long size = in.integer(tokens[0]);
-    if (size != 3)
-      in.fail("face " + std::to_string(i) + " has " + LineReader::printable(tokens[0]) +
-              " vertices: only triangles are read (polygons are not triangulated)");
-    if (tokens.size() < 4) in.fail("face " + std::to_string(i) + ": expected '3 a b c'");
-    for (std::size_t c = 1; c < tokens.size(); ++c) {
-      if (c >= 4) {
-        in.number(tokens[c]);  // a colour: checked to be numeric, not used
-        continue;
-      }
-      const long long k = in.integer(tokens[c]);
-      if (k < 0 || k >= vertex_count)
-        in.fail("face " + std::to_string(i) + ": vertex index " + std::to_string(k) + " is out of range (" +
-                std::to_string(vertex_count) + " vertices)");
-      corners.push_back(static_cast<int>(k));
-    }
-  }
-  if (in.next()) in.fail("unexpected content after the last face");
+  parse_off_into(text, name, OffSurface::planar, coordinates, corners);
   return assemble(coordinates, corners);
+}
+
+sym3::Mesh3 parse_off_surface(std::string_view text, const std::string& name) {
+  std::vector<double> coordinates;
+  std::vector<int> corners;
+  parse_off_into(text, name, OffSurface::spatial, coordinates, corners);
+  sym3::Mesh3 mesh;
+  mesh.vertices =
+      Eigen::Map<Eigen::Matrix3Xd>(coordinates.data(), 3, static_cast<Eigen::Index>(coordinates.size() / 3));
+  mesh.triangles = Eigen::Map<Eigen::Matrix3Xi>(corners.data(), 3, static_cast<Eigen::Index>(corners.size() / 3));
+  return mesh;
 }
 
 global::Mesh read_mesh(const fs::path& file) {
@@ -234,25 +290,32 @@ global::Mesh read_mesh(const fs::path& file) {
   if (is_polygon_soup_extension(extension)) return read_polygon_soup_mesh(file);
   if (extension != ".obj" && extension != ".off")
     throw MeshFileError(name + ": unknown extension '" + extension + "': expected .obj, .off, .ply, .stl or .ts");
-  std::error_code error;
-  if (!fs::is_regular_file(file, error)) throw MeshFileError(name + ": no such file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw MeshFileError(name + ": cannot be opened");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw MeshFileError(name + ": cannot be read");
+  const std::string text = file_text(file);
   return extension == ".obj" ? parse_obj(text, name) : parse_off(text, name);
 }
 
+sym3::Mesh3 read_off_surface(const fs::path& file) { return parse_off_surface(file_text(file), file.string()); }
+
 std::string obj_text(const global::Mesh& mesh) {
-  std::ostringstream out;
-  out.precision(17);
-  out << "# " << mesh.vertex_count() << " vertices, " << mesh.triangle_count() << " triangles (affinterp)\n";
-  for (Eigen::Index k = 0; k < mesh.vertex_count(); ++k)
-    out << "v " << mesh.vertices(0, k) << ' ' << mesh.vertices(1, k) << " 0\n";
-  for (Eigen::Index i = 0; i < mesh.triangle_count(); ++i)
-    out << "f " << mesh.triangles(0, i) + 1 << ' ' << mesh.triangles(1, i) + 1 << ' ' << mesh.triangles(2, i) + 1
-        << '\n';
-  return out.str();
+  // std::to_chars: the shortest text that reads back to the same double, without the streams' locale and
+  // formatting state (a 1M-triangle frame in 0.1 s rather than 0.6 s)
+  std::string out = "# " + std::to_string(mesh.vertex_count()) + " vertices, " + std::to_string(mesh.triangle_count()) +
+                    " triangles (affinterp)\n";
+  out.reserve(out.size() + 56 * static_cast<std::size_t>(mesh.vertex_count()) +
+              24 * static_cast<std::size_t>(mesh.triangle_count()));
+  char buffer[32];
+  auto append = [&](auto x) {
+    const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
+    out.append(buffer, end);
+  };
+  for (Eigen::Index k = 0; k < mesh.vertex_count(); ++k) {
+    out += "v ", append(mesh.vertices(0, k)), out += ' ', append(mesh.vertices(1, k)), out += " 0\n";
+  }
+  for (Eigen::Index i = 0; i < mesh.triangle_count(); ++i) {
+    out += "f ", append(mesh.triangles(0, i) + 1), out += ' ', append(mesh.triangles(1, i) + 1);
+    out += ' ', append(mesh.triangles(2, i) + 1), out += '\n';
+  }
+  return out;
 }
 
 void write_obj(const global::Mesh& mesh, const fs::path& file) {

@@ -1,5 +1,6 @@
 #pragma once
-// Reading and writing 2D triangle meshes as Wavefront OBJ or OFF.
+// Reading and writing 2D triangle meshes as Wavefront OBJ or OFF, and reading the 3D surfaces of the
+// deformation application (thesis Fig. 3.3) from OFF.
 //
 // Why our own reader: tinyobjloader (Debian 2.0.0rc10) triangulates polygons silently and reports
 // problems as free-text warnings without the element, and CGAL 5.5's IO::read_OBJ / IO::read_OFF
@@ -14,6 +15,9 @@
 // reader could differ between source and target. NUL bytes, non-numbers, counts beyond 2^31 − 1 or
 // beyond the file's end are refused. Structural checks (indices in range, finiteness) are
 // global::check_well_formed's.
+// A 3D surface (OFF only, the same reader): z is kept and must be finite, a face of N ≥ 3 vertices is
+// split into the fan of triangles (a, b_k, b_{k+1}) of its first corner, and an empty mesh is refused.
+#include "theory/deformation/mesh3.hpp"
 #include "theory/global/mesh.hpp"
 
 #include <filesystem>
@@ -36,6 +40,11 @@ global::Mesh parse_off(std::string_view text, const std::string& name);
 /// Reads `file` as OBJ (.obj) or OFF (.off), by its extension (case-insensitive); .ply, .stl and .ts through
 /// CGAL's polygon-soup reader (polygon_soup_file.hpp).
 global::Mesh read_mesh(const std::filesystem::path& file);
+
+/// Parses OFF text as a 3D surface; `name` prefixes error messages.
+sym3::Mesh3 parse_off_surface(std::string_view text, const std::string& name);
+/// Reads `file` as an OFF 3D surface, whatever its extension.
+sym3::Mesh3 read_off_surface(const std::filesystem::path& file);
 
 /// OBJ text of the mesh: `v x y 0` with 17 significant digits, `f a b c` 1-based.
 std::string obj_text(const global::Mesh& mesh);

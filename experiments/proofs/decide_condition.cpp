@@ -13,7 +13,7 @@ using logic::Polynomial;
 
 /// The sentence as the deciders get it. For the linear norm, b = s − k and c = s + k (symmetric and skew
 /// parts) with the variable order (a, d, s, k): QEPCAD then finishes in seconds where it runs out of cells in
-/// any order of a, b, c, d (research FINDINGS §6).
+/// any order of a, b, c, d.
 struct Encoding {
   Formula formula;
   std::vector<std::string> variables, qepcad_order;
@@ -76,9 +76,7 @@ ConditionVerdict decide_condition(const AtlasCell& cell, const Formula& conditio
     answer.sides.push_back(d);
     if (d.disagreement) {
       answer.verdict = ConditionVerdict::Verdict::unknown;
-      answer.reason = std::string("the deciders disagree on ") + side.name + " (qepcad " +
-                      std::string(to_string(d.runs[0].answer.result)) + ", z3 " +
-                      std::string(to_string(d.runs[1].answer.result)) + ")";
+      answer.reason = "the deciders disagree on " + d.answers();
       return answer;
     }
     all_empty = all_empty && d.result == SetResult::empty;

@@ -1,10 +1,10 @@
 #include "experiments/proofs/decide_sentence.hpp"
 
-#include "experiments/proofs/subprocess.hpp"
+#include "experiments/proofs/structural.hpp"
 #include "theory/logic/qepcad_input.hpp"
 #include "theory/logic/smtlib_input.hpp"
 
-#include <cmath>
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <future>
@@ -41,76 +41,35 @@ class ScratchFolder {
   fs::path path_;
 };
 
-/// The child-process limits of one decider run; `grace` seconds are added to the wall-clock limit.
-ProcessLimits process_limits(const DeciderLimits& limits, double grace) {
-  return {.wall_seconds = limits.seconds * limits.wall_factor + grace,
-          .cpu_seconds = limits.seconds,
-          .address_space_bytes = limits.address_space_bytes};
-}
-
-/// The output kept beside the input: timings removed, and a last line when the wall limit stopped the tool.
-std::string kept_output(const ProcessResult& r, const DeciderLimits& limits) {
-  std::string out = without_timings(r.output);
-  if (r.timed_out) {
-    std::ostringstream note;
-    note << "# stopped at the limit of " << limits.seconds << " s of CPU time (or "
-         << limits.seconds * limits.wall_factor << " s of wall-clock time)\n";
-    out += note.str();
+/// One decider's run on a written input: read from the stored transcript, or run now when there is no store.
+DeciderRun decider_run(const Decider& decider, const Sentence& sentence, const fs::path& dir,
+                       const std::string& input_text, const SentenceFiles& files, const DeciderLimits& limits) {
+  const fs::path input = dir / (sentence.name + std::string(decider.input_extension));
+  const std::string transcript_name = transcript_file_name(sentence.name, decider.tool);
+  if (files.plan) files.plan->add({files.answers, sentence.name, decider, input_text, limits});
+  std::optional<Transcript> transcript;
+  if (files.answers.empty()) {
+    transcript = run_decider(decider, input, input_text, limits);
+  } else if (transcript = read_transcript(files.answers / transcript_name);
+             !transcript || !transcript->answers(decider.tool, input_text)) {
+    DeciderRun missing{std::string(decider.tool), "", {}, 0};
+    missing.answer.reason = std::string(decider.tool) + ": no stored answer for this text of the sentence (" +
+                            (transcript ? "the input changed" : "none") + "; `affinterp prove` decides it)";
+    return missing;
   }
-  return out;
-}
-
-DeciderRun run_qepcad(const fs::path& input, const std::vector<std::string>& variables, const DeciderLimits& limits) {
-  const ProcessResult r =
-      run_process({"qepcad", "+N" + std::to_string(limits.qepcad_cells), "-noecho"}, input, process_limits(limits, 0));
-  write_text(input.string() + ".out", kept_output(r, limits));
-  DeciderRun run{"qepcad", "", {}, r.seconds};
-  if (r.not_found)
-    run.answer.reason = "qepcad: not installed (Debian package qepcad)";
-  else if (r.timed_out)
-    run.answer.reason = "qepcad: no answer within the time limit";
-  else
-    run.answer = parse_qepcad(r.output, variables);
-  return run;
-}
-
-DeciderRun run_z3(const fs::path& input, const DeciderLimits& limits) {
-  const int wall = std::max(1, static_cast<int>(std::floor(limits.seconds * limits.wall_factor)));
-  // z3's own wall-clock limit ends it cleanly; the process limits, a little later, are the backstop.
-  const ProcessResult r = run_process(
-      {"z3", "-T:" + std::to_string(wall), "-memory:" + std::to_string(limits.z3_megabytes), input.string()}, {},
-      process_limits(limits, 2));
-  write_text(input.string() + ".out", kept_output(r, limits));
-  DeciderRun run{"z3", "", {}, r.seconds};
-  if (r.not_found)
-    run.answer.reason = "z3: not installed (Debian package z3)";
-  else if (r.timed_out)
-    run.answer.reason = "z3: no answer within the time limit";
-  else
-    run.answer = parse_z3(r.output);
-  return run;
-}
-
-/// The QEPCAD variable list of the input just written (its second line), to name the witness coordinates.
-std::vector<std::string> qepcad_variables(const std::string& input) {
-  std::istringstream in(input);
-  std::string title, list;
-  std::getline(in, title);
-  std::getline(in, list);
-  std::vector<std::string> names;
-  std::string name;
-  for (const char c : list) {
-    if (c == '(' || c == ')' || c == ',') {
-      if (!name.empty()) names.push_back(name);
-      name.clear();
-    } else {
-      name += c;
-    }
-  }
-  return names;
+  if (files.answers.empty() || fs::weakly_canonical(dir) != fs::weakly_canonical(files.answers))
+    write_transcript(dir / transcript_name, *transcript);
+  return {std::string(decider.tool), "", answer_of(*transcript, input_text), transcript->seconds};
 }
 
 }  // namespace
+
+std::string SentenceDecision::answers() const {
+  std::string text = name + " (";
+  for (const DeciderRun& r : runs)
+    text += (&r == &runs.front() ? "" : ", ") + r.tool + " " + std::string(to_string(r.answer.result));
+  return text + ")";
+}
 
 std::string SentenceDecision::reasons() const {
   std::string text;
@@ -129,19 +88,23 @@ SentenceDecision decide_sentence(const Sentence& sentence, const SentenceFiles& 
 
   const std::string qepcad_text =
       logic::to_qepcad(sentence.formula, {.title = title, .free = {}, .order = sentence.qepcad_order, .commands = {}});
-  const fs::path qepcad_file = dir / (sentence.name + ".qepcad"), smt_file = dir / (sentence.name + ".smt2");
-  write_text(qepcad_file, qepcad_text);
-  write_text(smt_file, logic::to_smtlib(sentence.formula, title));
-
-  // Both at once, one per core.
-  auto qepcad = std::async(std::launch::async, run_qepcad, qepcad_file, qepcad_variables(qepcad_text), limits);
-  DeciderRun z3 = run_z3(smt_file, limits);
+  const std::string smt_text = logic::to_smtlib(sentence.formula, title);
+  const std::string prefix = files.reference.empty() ? "" : files.reference + "/";
   SentenceDecision decision;
   decision.name = sentence.name;
-  decision.runs = {qepcad.get(), std::move(z3)};
-  const std::string prefix = files.reference.empty() ? "" : files.reference + "/";
-  decision.runs[0].file = prefix + sentence.name + ".qepcad";
-  decision.runs[1].file = prefix + sentence.name + ".smt2";
+  decision.structural = is_structural(sentence.formula);
+  // When the deciders run now, both at once, one per core.
+  std::vector<std::future<DeciderRun>> runs;
+  for (const Decider& decider : sentence_deciders()) {
+    const std::string& text = decider.tool == "qepcad" ? qepcad_text : smt_text;
+    write_text(dir / (sentence.name + std::string(decider.input_extension)), text);
+    runs.push_back(std::async(std::launch::async, [&, text] {
+      DeciderRun run = decider_run(decider, sentence, dir, text, files, limits);
+      run.file = prefix + sentence.name + std::string(decider.input_extension);
+      return run;
+    }));
+  }
+  for (auto& run : runs) decision.runs.push_back(run.get());
 
   for (const DeciderRun& r : decision.runs) {
     if (r.answer.result == SetResult::unknown) continue;
@@ -150,10 +113,9 @@ SentenceDecision decide_sentence(const Sentence& sentence, const SentenceFiles& 
   }
   if (decision.disagreement) decision.result = SetResult::unknown;
   if (decision.result == SetResult::non_empty) {
-    // Z3's exact model first (it names every variable it constrains), then QEPCAD's sample point.
-    for (const int k : {1, 0})
-      if (const auto& w = decision.runs[k].answer.witness;
-          w && (!decision.witness || (!decision.witness->exact && w->exact)))
+    // An exact model first (the SMT solvers name every variable they constrain), then QEPCAD's sample point.
+    for (auto run = decision.runs.rbegin(); run != decision.runs.rend(); ++run)
+      if (const auto& w = run->answer.witness; w && (!decision.witness || (!decision.witness->exact && w->exact)))
         decision.witness = w;
     if (decision.witness)
       for (const std::string& v : logic::prenex(sentence.formula).bound_variables())
@@ -163,11 +125,8 @@ SentenceDecision decide_sentence(const Sentence& sentence, const SentenceFiles& 
 }
 
 ProofSentence to_proof_sentence(const Sentence& sentence, const SentenceDecision& decision) {
-  if (decision.disagreement)
-    throw std::runtime_error("the deciders disagree on the sentence " + sentence.name + " (" + decision.runs[0].file +
-                             ": qepcad " + std::string(to_string(decision.runs[0].answer.result)) + ", z3 " +
-                             std::string(to_string(decision.runs[1].answer.result)) + ")");
-  ProofSentence s{sentence.name, sentence.meaning, std::string(to_string(decision.result)), {}};
+  if (decision.disagreement) throw std::runtime_error("the deciders disagree on the sentence " + decision.answers());
+  ProofSentence s{sentence.name, sentence.meaning, std::string(to_string(decision.result)), {}, decision.structural};
   for (const DeciderRun& r : decision.runs)
     s.runs.push_back({r.tool, r.file, std::string(to_string(r.answer.result)), r.seconds});
   return s;
@@ -179,14 +138,17 @@ ProofSentence prove_sentence(const Sentence& sentence, const SentenceFiles& file
 
 Proof make_proof(std::string scope, std::string method, std::vector<ProofSentence> sentences) {
   Proof proof{std::move(scope), std::move(method), {}, std::move(sentences)};
-  for (const char* tool : {"qepcad", "z3"}) {
-    bool decided_all = !proof.sentences.empty();
-    for (const ProofSentence& s : proof.sentences) {
-      bool decided = false;
-      for (const ProofSentence::Run& r : s.runs) decided = decided || (r.tool == tool && r.result != "unknown");
-      decided_all = decided_all && decided;
-    }
-    if (decided_all) proof.checked_by.push_back(tool);
+  // Each checker that ran, in the order it first appears, when it answered every sentence it ran on.
+  std::vector<std::string> tools;
+  for (const ProofSentence& s : proof.sentences)
+    for (const ProofSentence::Run& r : s.runs)
+      if (std::find(tools.begin(), tools.end(), r.tool) == tools.end()) tools.push_back(r.tool);
+  for (const std::string& tool : tools) {
+    bool answered_all = true;
+    for (const ProofSentence& s : proof.sentences)
+      for (const ProofSentence::Run& r : s.runs)
+        answered_all = answered_all && (r.tool != tool || r.result != "unknown");
+    if (answered_all) proof.checked_by.push_back(tool);
   }
   return proof;
 }

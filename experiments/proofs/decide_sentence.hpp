@@ -1,9 +1,11 @@
 #pragma once
 // Deciding one first-order sentence with two independent deciders, QEPCAD B (cylindrical algebraic
-// decomposition) and Z3 (nlsat), run concurrently under limits; the input files and the tools' outputs are
-// written side by side so that anyone can rerun the sentence with the tool alone.
-#include "experiments/proofs/decider_output.hpp"
+// decomposition) and Z3 (nlsat). The input files and the deciders' transcripts are written side by side so
+// that anyone can rerun the sentence with the tool alone. A check reads the answers from stored transcripts
+// (proofs as data, issue 18) and never starts a decider; `affinterp decide` runs them.
+#include "experiments/proofs/decider.hpp"
 #include "experiments/proofs/proof.hpp"
+#include "experiments/proofs/proof_plan.hpp"
 #include "theory/logic/formula.hpp"
 
 #include <filesystem>
@@ -22,21 +24,15 @@ struct Sentence {
   std::vector<std::string> qepcad_order;
 };
 
-struct DeciderLimits {
-  /// Each decider's limit in CPU seconds, so that whether a sentence is decided does not depend on the load.
-  double seconds = 60;
-  /// The wall-clock limit, as a multiple of `seconds`: a backstop for proofs; `decide` uses 1, so that its
-  /// answer comes within the time it states.
-  double wall_factor = 4;
-  std::size_t address_space_bytes = std::size_t{1536} << 20;  ///< RLIMIT_AS of each decider
-  long qepcad_cells = 100'000'000;                            ///< QEPCAD's +N (garbage-collected space)
-  long z3_megabytes = 1024;                                   ///< z3 -memory:
-};
-
-/// Where a sentence's files go.
+/// Where a sentence's files go, and where its answers come from.
 struct SentenceFiles {
   std::filesystem::path dir;  ///< written here; empty: a temporary folder, removed afterwards
   std::string reference;      ///< how claims.json names `dir`, e.g. "proofs/atlas.linear.area"
+  /// The stored transcripts to read the answers from (reports/proofs/<claim id>); no decider runs then,
+  /// and a sentence without a transcript for its text is unknown. Empty: run the deciders now.
+  std::filesystem::path answers{};
+  /// When set, every decider run the sentence needs is recorded here, answered or not (`affinterp prove`).
+  ProofPlan* plan = nullptr;
 };
 
 struct DeciderRun {
@@ -48,18 +44,22 @@ struct DeciderRun {
 
 struct SentenceDecision {
   std::string name;
-  std::vector<DeciderRun> runs;           ///< qepcad, then z3
+  std::vector<DeciderRun> runs;           ///< in the order of sentence_deciders()
   SetResult result = SetResult::unknown;  ///< what the deciders that finished agree on
-  bool disagreement = false;              ///< one said empty, the other non-empty
+  bool disagreement = false;              ///< one said empty, another non-empty
+  bool structural = false;                ///< empty for propositional reasons alone (structural.hpp)
   /// A point of the set from a decider's output, exact ones preferred (Z3 omits unconstrained variables;
   /// they are 0 here).
   std::optional<Witness> witness;
   /// The unknown deciders' reasons, "qepcad: …; z3: …".
   std::string reasons() const;
+  /// What each decider answered, "name (qepcad empty, z3 empty, cvc5 unknown)".
+  std::string answers() const;
 };
 
-/// Writes <dir>/<name>.qepcad and <name>.smt2, runs both deciders at once, writes their outputs (timings
-/// removed) to <name>.qepcad.out and <name>.smt2.out, and reads their answers.
+/// Writes <dir>/<name>.qepcad and <name>.smt2 and the deciders' transcripts <name>.<tool>.out beside them,
+/// read from files.answers (or, when that is empty, from running both deciders at once), and reads their
+/// answers.
 SentenceDecision decide_sentence(const Sentence& sentence, const SentenceFiles& files, const DeciderLimits& limits);
 
 /// The record of a decided sentence for claims.json; throws std::runtime_error when the deciders disagree.
@@ -68,7 +68,8 @@ ProofSentence to_proof_sentence(const Sentence& sentence, const SentenceDecision
 /// decide_sentence, then to_proof_sentence.
 ProofSentence prove_sentence(const Sentence& sentence, const SentenceFiles& files, const DeciderLimits& limits = {});
 
-/// A proof of the sentences: checked_by names the deciders that decided every sentence.
+/// A proof of the sentences: checked_by names the checkers that answered every sentence they ran on, computed
+/// from the runs (never written by hand).
 Proof make_proof(std::string scope, std::string method, std::vector<ProofSentence> sentences);
 
 }  // namespace affinterp::proofs

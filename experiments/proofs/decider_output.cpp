@@ -192,27 +192,25 @@ std::string_view to_string(SetResult r) {
 DeciderAnswer parse_qepcad(const std::string& output, const std::vector<std::string>& variables) {
   DeciderAnswer answer;
   const std::vector<std::string> lines = lines_of(output);
+  // A run that printed an error, a warning or a failure answered nothing, whatever formula it printed (issue 17):
+  // "Error! Delineating polynomial should be added over cell(…)!", the McCallum projection's "may not be valid"
+  // warning (the projection is complete only for well-oriented input: Collins and Hong, J. Symb. Comput. 12,
+  // 1991; Brown, QEPCAD B user manual), "Failure occurred in …", "Prime list exhausted", "Too few cells
+  // reclaimed", std::bad_alloc at the address-space cap.
+  for (const std::string& line : lines)
+    for (const char* flag : {"Error", "Warning", "WARNING", "Failure", "McCallum projection", "Prime list exhausted",
+                             "Too few cells reclaimed", "bad_alloc"})
+      if (line.find(flag) != std::string::npos) {
+        answer.reason =
+            std::string(flag) == "bad_alloc" ? "qepcad: out of memory (address-space cap)" : "qepcad: " + trim(line);
+        return answer;
+      }
   std::size_t i = 0;
   while (i < lines.size() && lines[i].find("An equivalent quantifier-free formula:") == std::string::npos) ++i;
   if (i == lines.size()) {
-    for (const char* failure : {"Prime list exhausted", "Too few cells reclaimed", "bad_alloc", "Failure occurred in"})
-      for (const std::string& line : lines)
-        if (line.find(failure) != std::string::npos) {
-          answer.reason = std::string(failure) == "bad_alloc" ? "qepcad: out of memory (address-space cap)"
-                                                              : "qepcad: " + trim(line);
-          return answer;
-        }
     answer.reason = "qepcad: no answer";
     return answer;
   }
-  // QEPCAD B's McCallum projection is complete only for well-oriented input; where it is not, QEPCAD warns
-  // and still prints a formula, which may then be wrong (Collins and Hong, J. Symb. Comput. 12, 1991; Brown,
-  // QEPCAD B user manual). Such an answer decides nothing.
-  for (const std::string& line : lines)
-    if (line.find("McCallum projection") != std::string::npos) {
-      answer.reason = "qepcad: the McCallum projection may not be valid here (input not well-oriented)";
-      return answer;
-    }
   std::string formula;
   for (++i; i < lines.size() && trim(lines[i]).empty(); ++i) {
   }
@@ -249,7 +247,7 @@ DeciderAnswer parse_qepcad(const std::string& output, const std::vector<std::str
   return answer;
 }
 
-DeciderAnswer parse_z3(const std::string& output) {
+DeciderAnswer parse_smt(const std::string& output, std::string_view tool) {
   DeciderAnswer answer;
   const std::vector<std::string> lines = lines_of(output);
   std::string first;
@@ -258,12 +256,20 @@ DeciderAnswer parse_z3(const std::string& output) {
       first = trim(line);
       break;
     }
-  if (first == "unsat") {
-    answer.result = SetResult::empty;
+  const std::string name(tool);
+  if (first != "sat" && first != "unsat") {
+    answer.reason = first.empty() ? name + ": no answer" : name + ": " + first;
     return answer;
   }
-  if (first != "sat") {
-    answer.reason = first.empty() ? "z3: no answer" : "z3: " + first;
+  // An error, a warning or a resource message anywhere: the run answered nothing (issue 17).
+  for (const std::string& line : lines)
+    for (const char* flag : {"(error", "warning", "WARNING", "unknown", "timeout", "resource", "interrupted"})
+      if (line.find(flag) != std::string::npos) {
+        answer.reason = name + ": " + trim(line);
+        return answer;
+      }
+  if (first == "unsat") {
+    answer.result = SetResult::empty;
     return answer;
   }
   answer.result = SetResult::non_empty;

@@ -28,13 +28,14 @@ struct DeciderAnswer {
 };
 
 /// QEPCAD B's answer to a sentence over `variables` (its variable list, in order): "TRUE" is non-empty,
-/// "FALSE" empty; the witness from d-witness-list ("Coordinate i = …"). Failures ("Prime list exhausted",
-/// "Too few cells reclaimed", std::bad_alloc at the address-space cap, no answer) are unknown.
+/// "FALSE" empty; the witness from d-witness-list ("Coordinate i = …"). An output with an error, a warning or a
+/// failure anywhere ("Error! Delineating polynomial …", the McCallum projection warning, "Prime list
+/// exhausted", "Too few cells reclaimed", std::bad_alloc at the address-space cap) or no answer is unknown.
 DeciderAnswer parse_qepcad(const std::string& output, const std::vector<std::string>& variables);
 
-/// Z3's answer: sat (non-empty, with the model's values: decimals, (- a), (/ a b), root-obj), unsat (empty),
-/// unknown or timeout (unknown).
-DeciderAnswer parse_z3(const std::string& output);
+/// An SMT solver's answer (`tool`: "z3", "cvc5"): sat (non-empty, with the model's values: decimals, (- a),
+/// (/ a b), root-obj), unsat (empty); unknown, a timeout, or an error or warning anywhere: unknown.
+DeciderAnswer parse_smt(const std::string& output, std::string_view tool);
 
 /// The decider's output without the lines that vary run to run (QEPCAD's timings), so that the committed
 /// .out files change only when the answer does.

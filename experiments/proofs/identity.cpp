@@ -136,31 +136,13 @@ std::vector<ProofSentence> prove_identities(const std::vector<Identity>& identit
 }
 
 Proof identity_proof(std::string scope, std::string method, std::vector<ProofSentence> sentences) {
-  return {std::move(scope), std::move(method), {"ginac", "exact-grid"}, std::move(sentences)};
+  return make_proof(std::move(scope), std::move(method), std::move(sentences));
 }
 
 Proof combined_proof(std::string scope, std::string method, std::vector<ProofSentence> identities,
                      std::vector<ProofSentence> sentences) {
-  Proof proof = make_proof(std::move(scope), std::move(method), std::move(sentences));
-  proof.checked_by.insert(proof.checked_by.begin(), {"ginac", "exact-grid"});
-  proof.sentences.insert(proof.sentences.begin(), identities.begin(), identities.end());
-  return proof;
-}
-
-bool decided_twice(const Proof& proof) {
-  if (proof.sentences.empty()) return false;
-  for (const ProofSentence& s : proof.sentences) {
-    if (s.result == "unknown") return false;
-    int agreeing = 0;
-    for (const ProofSentence::Run& r : s.runs) {
-      if (r.result == s.result)
-        ++agreeing;
-      else if (r.result != "unknown")
-        return false;
-    }
-    if (agreeing < 2) return false;
-  }
-  return true;
+  identities.insert(identities.end(), sentences.begin(), sentences.end());
+  return make_proof(std::move(scope), std::move(method), std::move(identities));
 }
 
 bool contradicted(const Proof& proof) {
@@ -170,7 +152,7 @@ bool contradicted(const Proof& proof) {
 }
 
 bool proves(const Proof& proof) {
-  if (!decided_twice(proof)) return false;
+  if (!proof.decided() || !proof.has_content()) return false;
   for (const ProofSentence& s : proof.sentences) {
     const bool identity = !s.runs.empty() && s.runs.front().tool == "ginac";
     if (s.result != (identity ? "zero" : "empty")) return false;

@@ -36,19 +36,16 @@ ProofSentence prove_identity(const Identity& identity, const SentenceFiles& file
 /// prove_identity of each, in order.
 std::vector<ProofSentence> prove_identities(const std::vector<Identity>& identities, const SentenceFiles& files);
 
-/// A proof of identities alone, checked by {"ginac", "exact-grid"}.
+/// A proof of identities alone (make_proof: checked by GiNaC and the exact grid when both answered).
 Proof identity_proof(std::string scope, std::string method, std::vector<ProofSentence> sentences);
 
 /// A proof of identities (checked by GiNaC and the exact grid) and first-order sentences (checked by the deciders
-/// that decided every one, make_proof), identities first.
+/// that decided every one), identities first; checked_by computed by make_proof.
 Proof combined_proof(std::string scope, std::string method, std::vector<ProofSentence> identities,
                      std::vector<ProofSentence> sentences);
 
-/// Whether every part of `proof` was decided by two independent checkers: each sentence has an agreed result other
-/// than "unknown", given by at least two of its runs, and no run gave another answer.
-bool decided_twice(const Proof& proof);
-
-/// Whether `proof` proves its claim as stated: decided_twice, every identity "zero" and every sentence "empty".
+/// Whether `proof` proves its claim as stated: decided (by one checker at least; claims::proof_strength says how
+/// strongly), not structural alone, every identity "zero" and every sentence "empty".
 bool proves(const Proof& proof);
 
 /// Whether some part of `proof` was decided against the claim: an identity "non-zero" or a sentence "non-empty".

@@ -20,20 +20,30 @@ struct ProofSentence {
   std::string meaning;    ///< one line: what the sentence says, in words
   std::string result;     ///< the agreed result; disagreeing deciders make the check fail to run
   std::vector<Run> runs;  ///< one per decider, two independent ones for a proof
+  /// Empty for propositional reasons alone (structural.hpp): its emptiness is no evidence for the claim.
+  bool structural = false;
 };
 
 /// A verdict decided for all reals (issue 10): the domain, the method (encoding level and the lemmas that
 /// reduce the sentences) and every sentence with both deciders' results.
 struct Proof {
-  std::string scope;                     ///< the domain, in words
-  std::string method;                    ///< encoding and lemmas
-  std::vector<std::string> checked_by;   ///< the independent deciders, e.g. {"qepcad", "z3"}
+  std::string scope;   ///< the domain, in words
+  std::string method;  ///< encoding and lemmas
+  /// The checkers that answered every sentence they ran on, e.g. {"qepcad", "z3"}: computed by make_proof.
+  std::vector<std::string> checked_by;
   std::vector<ProofSentence> sentences;  ///< every sentence, in the order the method reads them
+  /// An external published theorem the method uses as a step, with its full reference; empty: none.
+  std::string cites{};
 
-  /// At least two deciders in checked_by, and every one of them gave each sentence its agreed result.
+  /// Every sentence has an agreed result other than "unknown", given by at least two of its runs, and no run
+  /// gave another answer.
   bool decided_by_two() const;
+  /// Every sentence has an agreed result other than "unknown", and no run gave another answer.
+  bool decided() const;
   /// Every sentence's agreed result is "empty".
   bool all_empty() const;
+  /// Some sentence carries the claim's content: not structural (an identity never is).
+  bool has_content() const;
 };
 
 }  // namespace affinterp::proofs

@@ -1,5 +1,7 @@
 #include "experiments/proofs/subprocess.hpp"
 
+#include "experiments/support/interrupt_cleanup.hpp"
+
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
@@ -74,14 +76,19 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::files
   int fds[2];
   if (pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error("run_process(): pipe failed");
   const auto start = std::chrono::steady_clock::now();
-  const pid_t pid = fork();
-  if (pid < 0) throw std::runtime_error("run_process(): fork failed");
-  if (pid == 0) {
-    close(fds[0]);
-    exec_child(arg_pointers.data(), env_pointers.data(), input_path.c_str(), limits, fds[1]);
-  }
+  // An interrupted run (Ctrl-C, SIGTERM) kills the decider's group too (interrupt_cleanup.hpp).
+  const KilledOnInterrupt child([&] {
+    const pid_t forked = fork();
+    if (forked < 0) throw std::runtime_error("run_process(): fork failed");
+    if (forked == 0) {
+      close(fds[0]);
+      exec_child(arg_pointers.data(), env_pointers.data(), input_path.c_str(), limits, fds[1]);
+    }
+    setpgid(forked, forked);  // also from the parent, so that killpg works even before the child ran
+    return forked;
+  });
+  const pid_t pid = child.pid();
   close(fds[1]);
-  setpgid(pid, pid);  // also from the parent, so that killpg works even before the child ran
 
   ProcessResult result;
   const auto deadline = start + std::chrono::duration<double>(limits.wall_seconds);

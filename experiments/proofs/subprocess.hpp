@@ -1,7 +1,8 @@
 #pragma once
 // Runs a decider as a child process under limits, so that no sentence can hang the suite or take the
 // machine's memory: a CPU-time limit (RLIMIT_CPU: whether a decider finishes does not depend on the machine's
-// load), a wall-clock limit (the whole process group is killed) and an address-space cap (RLIMIT_AS).
+// load), a wall-clock limit (the whole process group is killed) and an address-space cap (RLIMIT_AS). An
+// interrupted run kills the group too (experiments/support/interrupt_cleanup.hpp).
 #include <filesystem>
 #include <string>
 #include <vector>

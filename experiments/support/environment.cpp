@@ -39,6 +39,8 @@ std::string first_line_of_command(const char* command) {
 
 }  // namespace
 
+std::string cpu_flags() { return field_of("/proc/cpuinfo", "flags", ':'); }
+
 nlohmann::json environment_description() {
   return {
       {"compiler", std::string("g++ ") + __VERSION__},

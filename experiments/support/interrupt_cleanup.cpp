@@ -1,6 +1,7 @@
 #include "experiments/support/interrupt_cleanup.hpp"
 
 #include <semaphore.h>
+#include <signal.h>
 
 #include <atomic>
 #include <cerrno>
@@ -20,6 +21,7 @@ namespace {
 struct Registry {
   std::mutex mutex;
   std::multiset<fs::path> paths;
+  std::multiset<pid_t> groups;
 };
 
 /// Never destroyed: the removal thread may still use it while the process exits.
@@ -37,9 +39,12 @@ void record(int signal) {
   sem_post(&interrupted);
 }
 
-/// Removes `path`, again while files still appear in it (a thread may be writing into it meanwhile).
+/// Removes `path`, again while files still appear in it: the other threads keep running meanwhile, and a
+/// claim's check may write sentences or figures into it or recreate its folders (fs::create_directories).
+/// For up to 10 s, not half a second: on two loaded cores, removing a claims run's proofs and figures
+/// while its threads write can take longer.
 void remove_path(const fs::path& path) {
-  for (int attempt = 0; attempt < 100; ++attempt) {
+  for (int attempt = 0; attempt < 2000; ++attempt) {
     std::error_code error;
     fs::remove_all(path, error);
     if (!fs::exists(path, error)) return;
@@ -52,7 +57,10 @@ void remove_path(const fs::path& path) {
   }
   const int signal = received.load();
   Registry& r = registry();
-  r.mutex.lock();  // held until the end: nothing new is registered or settled
+  r.mutex.lock();  // held until the end: nothing new is registered, started or settled
+  // The deciders first (process groups of their own, which a terminal's signal does not reach): they
+  // would outlive this process for up to their time limit.
+  for (const pid_t group : r.groups) killpg(group, SIGKILL);
   for (const fs::path& path : r.paths) remove_path(path);
   std::signal(signal, SIG_DFL);
   std::raise(signal);
@@ -96,6 +104,19 @@ void RemovedOnInterrupt::settle(const std::function<void()>& action) {
   action();
   r.paths.erase(r.paths.find(path_));
   registered_ = false;
+}
+
+KilledOnInterrupt::KilledOnInterrupt(const std::function<pid_t()>& start) {
+  Registry& r = registry();
+  const std::lock_guard lock(r.mutex);
+  pid_ = start();
+  r.groups.insert(pid_);
+}
+
+KilledOnInterrupt::~KilledOnInterrupt() {
+  Registry& r = registry();
+  const std::lock_guard lock(r.mutex);
+  r.groups.erase(r.groups.find(pid_));
 }
 
 }  // namespace affinterp

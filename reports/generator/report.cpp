@@ -67,13 +67,19 @@ std::string figure_link(const json& figures) {
 /// How strong a claim's verdict is, in the words of the report's "Strength" list.
 std::string strength_words(const json& claim) {
   const std::string strength = claim.value("strength", "unstated");
+  const json proof = claim.value("proof", json());
+  const auto checkers = [&] {
+    std::string names;
+    for (const auto& d : proof.value("checked_by", json::array()))
+      names += (names.empty() ? "" : ", ") + d.get<std::string>();
+    return names;
+  };
   if (strength == "proved") return "proved for all reals";
+  if (strength == "proved-one-decider") return "proved, one decider (" + checkers() + ")";
+  if (strength == "proved-citing") return "proved, citing " + proof.value("cites", std::string("?"));
   if (strength == "exact-counterexample") {
-    const json proof = claim.value("proof", json());
     if (!proof.is_object() || proof.value("checked_by", json::array()).size() < 2) return "exact counterexample";
-    std::string deciders;
-    for (const auto& d : proof["checked_by"]) deciders += (deciders.empty() ? "" : ", ") + d.get<std::string>();
-    return "exact counterexample; rest proved (" + deciders + ")";
+    return "exact counterexample; rest proved (" + checkers() + ")";
   }
   if (strength == "grid") return "grid only";
   if (strength == "sample") return "sample only";
@@ -86,19 +92,33 @@ void write_proof(std::ostringstream& md, const json& proof) {
   md << "**Proof for all reals.** Scope: " << proof.value("scope", "") << ". Method: " << proof.value("method", "")
      << ". Decided by";
   for (const auto& tool : proof["checked_by"]) md << " " << tool.get<std::string>();
-  md << ".\n\n| sentence | meaning | result | runs |\n|---|---|---|---|\n";
+  md << ".\n\n| sentence | meaning | result | each checker: its answer (transcript), the time it took |\n"
+        "|---|---|---|---|\n";
+  bool any_structural = false;
   for (const auto& s : proof["sentences"]) {
     std::string runs;
     for (const auto& r : s["runs"]) {
+      // A decider's transcript is <sentence>.<tool>.out beside its input (experiments/proofs/transcript.hpp).
+      const std::string tool = r.value("tool", ""), file = r.value("file", "");
+      const bool decider = tool == "qepcad" || tool == "z3" || tool == "cvc5";
       std::ostringstream one;
       one.precision(2);
-      one << std::fixed << r.value("tool", "") << ": [" << r.value("result", "") << "](" << r.value("file", "") << ") "
-          << r.value("seconds", 0.0) << " s";
+      one << std::fixed << "[" << tool << "](" << file << "): [" << r.value("result", "") << "](";
+      if (decider)
+        one << file.substr(0, file.rfind('/') + 1) << s.value("name", "") << "." << tool << ".out";
+      else
+        one << file;
+      one << ") " << r.value("seconds", 0.0) << " s";
       runs += (runs.empty() ? "" : "; ") + one.str();
     }
+    const bool structural = s.value("structural", false);
+    any_structural = any_structural || structural;
     md << "| " << cell(s.value("name", "")) << " | " << cell(s.value("meaning", "")) << " | " << s.value("result", "")
-       << " | " << cell(runs) << " |\n";
+       << (structural ? " (structural)" : "") << " | " << cell(runs) << " |\n";
   }
+  if (any_structural)
+    md << "\n*Structural*: empty for propositional reasons alone (every polynomial atom replaced by a boolean, "
+          "the sentence stays unsatisfiable), so no evidence for the claim; its weight rests on the lemmas.\n";
   md << "\n";
 }
 
@@ -182,9 +202,11 @@ void write_engine_speed(std::ostringstream& md, const json& speed) {
     md << "Not measured: `reports/bench/bench_interp.json` is absent (run `experiments/reproduce.sh`).\n\n";
     return;
   }
-  md << "`build/bin/bench_interp` on " << speed.value("mesh", "?") << " (" << fixed(speed.value("triangles", json()), 0)
-     << " triangles), single-threaded, the median of ten runs of at least a second each with its 95% bootstrap "
-        "interval (10,000 resamples, seed 2015; experiments/claims/measured.hpp): a target is met when the whole "
+  md << "The latest run: `build/bin/bench_interp` on " << speed.value("mesh", "?") << " ("
+     << fixed(speed.value("triangles", json()), 0)
+     << " triangles), single-threaded, the median of ten repetitions of at least a second each in each of the run's "
+        "whole processes, with its 95% bootstrap interval over processes and repetitions (10,000 resamples, seed "
+        "2015; experiments/bench/measured.hpp): a target is met when the whole "
         "interval meets it, missed when none of it does, and undecided otherwise; machine: "
      << cell(speed.value("machine", "?")) << "; " << cell(speed.value("compiler", "?"))
      << ". Targets: E^F ≥ 150 frames/s, E^R ≥ 25 frames/s after set-up, "
@@ -209,6 +231,24 @@ void write_engine_speed(std::ostringstream& md, const json& speed) {
        << " |\n";
   }
   md << "\n";
+  const json history = speed.value("history", json());
+  if (!history.is_object() || history["rows"].empty()) return;
+  md << "On every recorded run (`bench/history/`; " << cell(history.value("rule", "")) << "):\n\n"
+     << "| run | CPU | cores | energy | frames/s (95% CI) | set-up ms (95% CI) | processes | targets met |\n"
+        "|---|---|---|---|---|---|---|---|\n";
+  const auto with_ci = [](const json& value, const json& ci, int digits) {
+    return fixed(value, digits) + (ci.is_array() ? " (" + fixed(ci[0], digits) + "–" + fixed(ci[1], digits) + ")" : "");
+  };
+  for (const auto& row : history["rows"])
+    md << "| " << row.value("run", "") << (row.value("recorded", true) ? "" : " (not recorded yet)") << " | "
+       << cell(row["cpu"].is_string() ? row["cpu"].get<std::string>() : "?") << " | " << row["cores"].dump() << " | "
+       << row.value("energy", "") << " | " << with_ci(row["frames_per_s"], row["frames_per_s_ci95"], 1) << " | "
+       << with_ci(row["setup_ms"], row["setup_ms_ci95"], 1) << " | " << row["processes"].dump() << " | "
+       << row.value("verdict", "") << " |\n";
+  md << "\nAcross runs:";
+  for (const auto& [energy, verdict] : history["across_runs"].items())
+    md << " E^" << energy << " " << verdict.get<std::string>() << ";";
+  md << "\n\n";
 }
 
 /// How the engine's cost grows with the mesh against the 1M-triangle targets (bench_scale, one run).
@@ -269,22 +309,36 @@ std::string render_markdown(const json& doc) {
         "otherwise a sweep whose size, seed and tolerance are stated).\n"
         "- **refuted**: fails; the counterexample can be re-verified from claims.json alone.\n"
         "- **corrected**: fails as printed, holds after the stated correction.\n"
-        "- **reproduced** / **not-reproduced**: a measured figure compared with the paper's: its 95% bootstrap "
-        "interval over the benchmark's repetitions lies inside / outside the band of values the claim's wording "
-        "allows (stated in the claim's rule); an interval across an edge of the band is inconclusive.\n"
+        "- **reproduced** / **not-reproduced**: a measured figure compared with the paper's, on every recorded run "
+        "of the benchmarks (`bench/history/`, one entry per run, machine named): on each run its 95% bootstrap "
+        "interval over the benchmark's repetitions and processes lies inside / outside the band of values the "
+        "claim's wording allows (stated in the claim's rule; an interval across an edge of the band leaves that run "
+        "inconclusive), and every run says so.\n"
+        "- **machine-dependent**: a measured figure reproduced on one recorded run and not on another: a property "
+        "of the machine, not of the claim; the claim's table lists every run and its plot shows each run's "
+        "interval against the band. Runs that decide and agree while others are undecided leave the claim "
+        "inconclusive.\n"
         "- **inconclusive**: not decided; the finding says why.\n"
         "- **pending**: no check implemented yet.\n\n"
         "## Strength\n\n"
-        "- **proved for all reals**: the claim (and its correction, if any) is a first-order sentence over the "
-        "reals decided by two independent deciders (QEPCAD B and Z3), or a polynomial identity checked by two "
-        "independent checkers; the sentence files are in `proofs/` and rerun with the tool alone.\n"
+        "- **proved for all reals**: the claim (and its correction, if any) reduces, by the lemmas written out in "
+        "`proofs/LEMMAS.md`, to first-order sentences over the reals each answered by two independent deciders "
+        "(of QEPCAD B, Z3 and cvc5) and polynomial identities each checked by two independent checkers (GiNaC, an "
+        "exact degree grid); a transcript with an error or a warning answers nothing. The sentence files and "
+        "each decider's transcript are in `proofs/` and rerun with the tool alone.\n"
+        "- **proved, one decider (name)**: as above, but some sentence was answered by the named decider only.\n"
+        "- **proved, citing (theorem)**: as above, with an external published theorem as a step (full reference "
+        "given).\n"
+        "- Sentences marked **structural** are empty for propositional reasons alone and count as no evidence; "
+        "a proof of structural sentences only proves nothing.\n"
         "- **exact counterexample**: the printed claim fails at an exact (rational) point anyone can re-verify. "
         "With \"rest proved\", the claim's proof section decides for all reals, by the deciders named, the "
         "sentences that fail as printed and those that hold (the correction, or what holds instead); otherwise "
         "a correction is checked on a grid or sample only.\n"
         "- **grid only** / **sample only**: checked on the stated grid or random sample (size, seed and "
         "tolerance in the evidence), not proved.\n"
-        "- **measured**: a measured figure, with its 95% bootstrap interval over repeated runs.\n";
+        "- **measured**: a measured figure, with its 95% bootstrap interval over repeated runs, on each recorded "
+        "machine.\n";
 
   std::string group;
   for (const auto& c : claims) {

@@ -132,27 +132,22 @@ void FrameAssembly::build_pattern() {
         for (const auto& [l, alpha_l] : term.coefficients)
           if (k >= l) constant_values_[static_cast<std::size_t>(slot(k, l))] += term.weight * alpha_k * alpha_l;
 
-  // A dense term c |Σ α_k z_k − r|² (the barycentre) is c α αᵀ: a column α of U. H is grounded at vertex 0
-  // (+g on its diagonal, −g in U diag(c) Uᵀ) so that it stays definite even when the dense term is the
-  // only one fixing translation.
-  std::vector<Eigen::VectorXd> columns;
-  std::vector<double> weights;
-  for (const ConstraintTerm& term : constraints_)
+  // A dense term c |Σ α_k z_k − r|² (the barycentre) is c α αᵀ, left to the minimiser. It is grounded when
+  // it alone fixes translation: every triangle's error is translation invariant, and so is a sparse term
+  // whose coefficients sum to 0 (an edge direction), so H 1 = 0 exactly when every sparse term's do.
+  bool translation_invariant = true;
+  for (const ConstraintTerm& term : constraints_) {
+    double sum = 0;
+    for (const auto& [k, alpha_k] : term.coefficients) sum += alpha_k;
     if (term.dense()) {
-      Eigen::VectorXd column = Eigen::VectorXd::Zero(n_);
-      for (const auto& [k, alpha_k] : term.coefficients) column[k] = alpha_k;
-      columns.push_back(column), weights.push_back(term.weight);
+      eigen_assert(!dense_ && "one dense term, the barycentre");
+      dense_ = DenseTerm{Eigen::VectorXd::Zero(n_), term.weight, sum != 0};
+      for (const auto& [k, alpha_k] : term.coefficients) dense_->alpha[k] = alpha_k;
+    } else if (sum != 0) {
+      translation_invariant = false;
     }
-  if (!columns.empty()) {
-    double grounding = 0;  // the mean diagonal entry of E^F's L, comparable to a triangle's diagonal entries
-    for (const TriangleTerm& term : forward_terms_) grounding += term.weight * term.D.squaredNorm();  // tr DDᵀ
-    grounding /= static_cast<double>(n_);
-    constant_values_[static_cast<std::size_t>(slot(0, 0))] += grounding;
-    columns.push_back(Eigen::VectorXd::Unit(n_, 0)), weights.push_back(-grounding);
   }
-  U_.resize(n_, static_cast<Eigen::Index>(columns.size()));
-  for (std::size_t j = 0; j < columns.size(); ++j) U_.col(static_cast<Eigen::Index>(j)) = columns[j];
-  c_ = Eigen::Map<const Eigen::VectorXd>(weights.data(), static_cast<Eigen::Index>(weights.size()));
+  if (dense_) dense_->grounded = dense_->grounded && translation_invariant;
 }
 
 void FrameAssembly::matrix_at(double t, SparseMatrix& H) const {
@@ -171,6 +166,9 @@ void FrameAssembly::matrix_at(double t, SparseMatrix& H) const {
     add(forward_terms_[i], forward_.at(static_cast<Eigen::Index>(i), t), slots);
     if (reverse_) add(reverse_terms_[i], reverse_->at(static_cast<Eigen::Index>(i), 1 - t), slots);  // E^{-1}(1 − t)
   }
+  // grounded at vertex 0: column 0 of the lower triangle is (H_00, 0, …, 0), the diagonal first
+  if (dense_ && dense_->grounded)
+    for (int s = H.outerIndexPtr()[0] + 1; s < H.outerIndexPtr()[1]; ++s) values[s] = 0.0;
 }
 
 Eigen::VectorXcd FrameAssembly::right_hand_side_at(double t) const {

@@ -14,11 +14,13 @@
 #include "theory/global/local_paths.hpp"
 #include "theory/global/mesh.hpp"
 #include "theory/global/options.hpp"
+#include "theory/global/sparse_minimiser.hpp"
 
 #include <Eigen/SparseCore>
 
 #include <array>
 #include <complex>
+#include <optional>
 #include <vector>
 
 namespace affinterp::global {
@@ -45,14 +47,14 @@ class FrameAssembly {
   /// H's sparsity pattern, lower triangle: the vertex pairs of every triangle and sparse constraint term.
   /// The matrix that matrix_at fills is a copy of it.
   const SparseMatrix& pattern() const { return pattern_; }
-  /// Writes the lower triangle of H(t), plus `grounding` on the diagonal of vertex 0 (see low_rank_columns),
-  /// into the values of `H`, which has the structure of pattern(): one matrix serves every frame.
+  /// Writes the lower triangle of H(t) without the dense term, grounded at vertex 0 when dense_term() says
+  /// so (column 0's off-diagonal entries zero: sparse_minimiser.hpp), into the values of `H`, which has the
+  /// structure of pattern(): one matrix serves every frame.
   void matrix_at(double t, SparseMatrix& H) const;
   /// −ũ(t)/2, so that H z = −ũ/2 at the minimiser.
   Eigen::VectorXcd right_hand_side_at(double t) const;
-  /// The dense constraint terms (the barycentre) as U diag(c) Uᵀ, minus the grounding added to matrix_at.
-  const Eigen::MatrixXd& low_rank_columns() const { return U_; }
-  const Eigen::VectorXd& low_rank_weights() const { return c_; }
+  /// The dense constraint term (the barycentre), which matrix_at leaves out, if there is one.
+  const std::optional<DenseTerm>& dense_term() const { return dense_; }
 
   /// The whole form at t, real and dense (for inspection on small meshes).
   FrameQuadratic dense_quadratic_at(double t) const;
@@ -73,9 +75,8 @@ class FrameAssembly {
   std::vector<ConstraintTerm> constraints_;
   SparseMatrix pattern_;
   std::vector<int> triangle_slots_;      ///< per triangle, 9 slots into pattern_'s values (−1: upper half)
-  std::vector<double> constant_values_;  ///< the constraint terms and the grounding (real)
-  Eigen::MatrixXd U_;
-  Eigen::VectorXd c_;
+  std::vector<double> constant_values_;  ///< the sparse constraint terms (real)
+  std::optional<DenseTerm> dense_;
 };
 
 }  // namespace affinterp::global

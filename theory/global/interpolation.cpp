@@ -8,11 +8,15 @@
 #include "theory/global/sparse_minimiser.hpp"
 #include "theory/global/well_posedness.hpp"
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <exception>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 namespace affinterp::global {
 namespace {
@@ -67,15 +71,47 @@ struct Interpolation::Engine {
   std::optional<FrameAssembly> assembly;
   /// H = L real and fixed: factored once, x and y solved as two real columns.
   SparseMinimiser<double> fixed;
-  /// H(t) complex Hermitian: its values refilled and refactorised per frame in this workspace, its pattern
-  /// analysed once. The only state a frame changes, hence mutable, and guarded so that the const
-  /// vertices_at is safe to call concurrently.
-  struct PerFrame {
-    std::mutex mutex;
+  /// H(t) complex Hermitian: its values refilled and refactorised per frame in a workspace, its pattern
+  /// analysed once.
+  struct Workspace {
     FrameAssembly::SparseMatrix H;
     SparseMinimiser<std::complex<double>> minimiser;
   };
+  /// The workspace of vertices_at(t): the only state a frame changes, hence mutable, and guarded so that
+  /// the const vertices_at is safe to call concurrently. The batch call copies it, one per worker.
+  struct PerFrame : Workspace {
+    std::mutex mutex;
+  };
   mutable PerFrame per_frame;
+
+  /// v(t) at a t in range, when H is fixed: L [x y] = [Re b, Im b], both columns in one solve.
+  Eigen::Matrix2Xd isotropic_frame(double t) const {
+    const Eigen::VectorXcd b = assembly->right_hand_side_at(t);  // H z = −ũ/2 (hermitian_form.hpp)
+    Eigen::MatrixXd xy(b.size(), 2);
+    xy << b.real(), b.imag();
+    return fixed.solve(xy).transpose();
+  }
+  /// v(t) at a t in range, when H(t) changes with A_i(t): a numeric factorisation per frame in `work`.
+  Eigen::Matrix2Xd frame_in(Workspace& work, double t) const {
+    assembly->matrix_at(t, work.H);
+    work.minimiser.factorise(work.H);
+    const Eigen::VectorXcd z = work.minimiser.solve(assembly->right_hand_side_at(t));
+    Eigen::Matrix2Xd v(2, z.size());
+    v << z.real().transpose(), z.imag().transpose();  // z_k = v_kx + i v_ky
+    return v;
+  }
+  template <class Scalar>
+  void analyse(SparseMinimiser<Scalar>& minimiser, const Eigen::SparseMatrix<Scalar>& K) const {
+    if (options.back_end)
+      minimiser.analyse(K, assembly->dense_term(), *options.back_end);
+    else
+      minimiser.analyse(K, assembly->dense_term());
+  }
+  void require_in_range(double t) const {
+    if (!(t >= options.t_begin && t <= options.t_end))
+      throw std::out_of_range("t = " + std::to_string(t) + " is outside the time range [" +
+                              std::to_string(options.t_begin) + ", " + std::to_string(options.t_end) + "]");
+  }
 
   Engine(const Mesh& source, const Mesh& target, InterpolationOptions opts, Eigen::VectorXd angles)
       : options(std::move(opts)),
@@ -88,12 +124,13 @@ struct Interpolation::Engine {
     FrameAssembly::SparseMatrix H = assembly->pattern();
     assembly->matrix_at(options.t_begin, H);
     if (assembly->isotropic()) {
-      const Eigen::SparseMatrix<double> L = H.real();
-      fixed.analyse(L);
-      fixed.factorise(L, assembly->low_rank_columns(), assembly->low_rank_weights());
+      Eigen::SparseMatrix<double> L = H.real();
+      L.makeCompressed();
+      analyse(fixed, L);
+      fixed.factorise(L);
     } else {
-      per_frame.minimiser.analyse(H);
-      per_frame.minimiser.factorise(H, assembly->low_rank_columns(), assembly->low_rank_weights());
+      analyse(per_frame.minimiser, H);
+      per_frame.minimiser.factorise(H);
       per_frame.H = std::move(H);
     }
   }
@@ -115,26 +152,46 @@ Interpolation& Interpolation::operator=(Interpolation&&) noexcept = default;
 
 Eigen::Matrix2Xd Interpolation::vertices_at(double t) const {
   const Engine& engine = *engine_;  // const all through, but for the per-frame workspace
-  const InterpolationOptions& o = engine.options;
-  if (!(t >= o.t_begin && t <= o.t_end))
-    throw std::out_of_range("t = " + std::to_string(t) + " is outside the time range [" + std::to_string(o.t_begin) +
-                            ", " + std::to_string(o.t_end) + "]");
-  const FrameAssembly& assembly = *engine.assembly;
-  const Eigen::VectorXcd b = assembly.right_hand_side_at(t);  // H z = −ũ/2 (hermitian_form.hpp)
-  if (assembly.isotropic()) {                                 // L [x y] = [Re b, Im b]
-    Eigen::MatrixXd xy(b.size(), 2);
-    xy << b.real(), b.imag();
-    return engine.fixed.solve(xy).transpose();
+  engine.require_in_range(t);
+  if (engine.assembly->isotropic()) return engine.isotropic_frame(t);
+  const std::lock_guard lock(engine.per_frame.mutex);
+  return engine.frame_in(engine.per_frame, t);
+}
+
+std::vector<Eigen::Matrix2Xd> Interpolation::vertices_at(const std::vector<double>& times) const {
+  const Engine& engine = *engine_;
+  for (const double t : times) engine.require_in_range(t);
+  std::vector<Eigen::Matrix2Xd> frames(times.size());
+  const bool isotropic = engine.assembly->isotropic();
+  std::size_t workers = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), times.size());
+  if (!isotropic) {  // a factor per worker, within 1 GiB
+    const double bytes = std::max(1.0, engine.per_frame.minimiser.factor().factor_bytes());
+    workers = std::min(workers, static_cast<std::size_t>(std::max(1.0, std::floor(1073741824.0 / bytes))));
   }
-  // H(t) changes with A_i(t): a numeric factorisation per frame
-  Engine::PerFrame& frame = engine.per_frame;
-  const std::lock_guard lock(frame.mutex);
-  assembly.matrix_at(t, frame.H);
-  frame.minimiser.factorise(frame.H, assembly.low_rank_columns(), assembly.low_rank_weights());
-  const Eigen::VectorXcd z = frame.minimiser.solve(b);
-  Eigen::Matrix2Xd v(2, z.size());
-  v << z.real().transpose(), z.imag().transpose();  // z_k = v_kx + i v_ky
-  return v;
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  auto work = [&] {
+    try {
+      std::optional<Engine::Workspace> own;
+      if (!isotropic) {
+        const std::lock_guard lock(engine.per_frame.mutex);
+        own.emplace(engine.per_frame);
+      }
+      for (std::size_t k; (k = next++) < times.size();)
+        frames[k] = isotropic ? engine.isotropic_frame(times[k]) : engine.frame_in(*own, times[k]);
+    } catch (...) {
+      const std::lock_guard lock(failure_mutex);
+      if (!failure) failure = std::current_exception();
+      next = times.size();
+    }
+  };
+  std::vector<std::thread> threads;
+  for (std::size_t w = 1; w < workers; ++w) threads.emplace_back(work);
+  work();
+  for (std::thread& thread : threads) thread.join();
+  if (failure) std::rethrow_exception(failure);
+  return frames;
 }
 
 FrameEnergy Interpolation::energy_at(double t, const Eigen::Matrix2Xd& v) const {

@@ -32,6 +32,16 @@ std::string to_string(Energy energy) {
   return "?";
 }
 
+std::string to_string(RotationBranch branch) {
+  switch (branch) {
+    case RotationBranch::principal:
+      return "principal";
+    case RotationBranch::consistent:
+      return "consistent";
+  }
+  return "?";
+}
+
 LocalHomotopy parse_local_homotopy(const std::string& name) {
   for (auto h : {LocalHomotopy::exp, LocalHomotopy::polar, LocalHomotopy::linear, LocalHomotopy::svd})
     if (to_string(h) == name) return h;
@@ -42,6 +52,12 @@ Energy parse_energy(const std::string& name) {
   for (auto e : {Energy::frobenius, Energy::procrustes, Energy::similarity, Energy::blend})
     if (to_string(e) == name) return e;
   throw std::invalid_argument("unknown energy '" + name + "' (F, S, R, blend)");
+}
+
+RotationBranch parse_rotation_branch(const std::string& name) {
+  for (auto b : {RotationBranch::principal, RotationBranch::consistent})
+    if (to_string(b) == name) return b;
+  throw std::invalid_argument("unknown rotation branch '" + name + "' (principal, consistent)");
 }
 
 }  // namespace affinterp::global

@@ -74,6 +74,12 @@ struct Constraints {
   std::optional<BarycentreLocus> barycentre;
 };
 
+/// The sparse Cholesky back-end (sparse_factor.hpp).
+enum class SparseBackEnd {
+  simplicial,  ///< Eigen's SimplicialLDLT
+  cholmod,     ///< CHOLMOD's supernodal LLᴴ (when built in)
+};
+
 struct InterpolationOptions {
   LocalHomotopy homotopy = LocalHomotopy::exp;
   Energy energy = Energy::similarity;
@@ -81,20 +87,28 @@ struct InterpolationOptions {
   /// w_i of the blend, one per triangle; empty means `blend_weight` for every triangle.
   Eigen::VectorXd blend_weights;
   double blend_weight = 0.5;
-  /// E_i ← Area(p_{i1}, p_{i2}, p_{i3}) E_i ("Improvements").
-  bool area_weighted = false;
+  /// E_i ← Area(p_{i1}, p_{i2}, p_{i3}) E_i ("Improvements"): on by default, as Kaji recommend it ("it is
+  /// reasonable to weight by the areas of the initial triangles", Fig. 7 against the unweighted Fig. 6) and
+  /// as it makes the global error a sum over the shape's area, not over its triangles, so that refining a
+  /// region does not make it stiffer. False gives the plain sum of Kaji §4 (Figs. 2–6).
+  bool area_weighted = true;
   /// E′(t) = E(t) + E^{−1}(1 − t): the reverse problem's energy in the same unknowns ("Improvements").
   bool symmetric = false;
   Constraints constraints;
   /// The times vertices_at accepts (loci are parameterised on [0, 1] and extended by their end cubics).
   double t_begin = 0.0, t_end = 1.0;
+  /// The sparse back-end; none: chosen by the mesh's size (sparse_factor.hpp). Same minimiser either way,
+  /// to rounding; for benchmarks comparing them.
+  std::optional<SparseBackEnd> back_end;
 };
 
 std::string to_string(LocalHomotopy homotopy);
 std::string to_string(Energy energy);
-/// Parses the names used by to_string ("exp", "polar", "linear", "svd"; "F", "S", "R", "blend").
-/// Throws std::invalid_argument on anything else.
+std::string to_string(RotationBranch branch);
+/// Parses the names used by to_string ("exp", "polar", "linear", "svd"; "F", "S", "R", "blend";
+/// "principal", "consistent"). Throws std::invalid_argument on anything else.
 LocalHomotopy parse_local_homotopy(const std::string& name);
 Energy parse_energy(const std::string& name);
+RotationBranch parse_rotation_branch(const std::string& name);
 
 }  // namespace affinterp::global

@@ -2,47 +2,66 @@
 
 #include "theory/global/refused_problem.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <limits>
-
 namespace affinterp::global {
 
 template <class Scalar>
-void SparseMinimiser<Scalar>::analyse(const SparseMatrix& K) {
-  ldlt_.analyzePattern(K);
+SparseMinimiser<Scalar>::SparseMinimiser(const SparseMinimiser& other)
+    : factor_(other.factor_ ? other.factor_->clone() : nullptr),
+      dense_(other.dense_),
+      alpha_(other.alpha_),
+      K_inverse_alpha_(other.K_inverse_alpha_),
+      alpha_K_alpha_(other.alpha_K_alpha_) {}
+
+template <class Scalar>
+void SparseMinimiser<Scalar>::analyse(const SparseMatrix& K, std::optional<DenseTerm> dense) {
+  factor_ = make_sparse_factor<Scalar>(K.rows());
+  factor_->analyse(K);
+  dense_ = std::move(dense);
+  if (dense_) alpha_ = dense_->alpha.cast<Scalar>();
 }
 
 template <class Scalar>
-void SparseMinimiser<Scalar>::factorise(const SparseMatrix& K, const Eigen::MatrixXd& U, const Eigen::VectorXd& c) {
-  ldlt_.factorize(K);
-  double smallest = std::numeric_limits<double>::infinity(), largest = 1.0;
-  for (const Scalar& pivot : ldlt_.vectorD())  // real: D of an LDLᴴ factorisation
-    smallest = std::min(smallest, std::real(pivot)), largest = std::max(largest, std::abs(pivot));
-  if (ldlt_.info() != Eigen::Success || !(smallest > 1e-12 * largest) || !std::isfinite(largest))
+void SparseMinimiser<Scalar>::analyse(const SparseMatrix& K, std::optional<DenseTerm> dense, SparseBackEnd back_end) {
+  factor_ = make_sparse_factor<Scalar>(back_end);
+  factor_->analyse(K);
+  dense_ = std::move(dense);
+  if (dense_) alpha_ = dense_->alpha.cast<Scalar>();
+}
+
+template <class Scalar>
+void SparseMinimiser<Scalar>::factorise(const SparseMatrix& K) {
+  if (!factor_->factorise(K))
     throw RefusedProblem(
         "the quadratic form G of the global error plus constraints is singular, so the minimiser is not unique "
         "(is the mesh in one connected piece, with every vertex in a triangle?)");
-  U_ = U.cast<Scalar>();
-  if (U.cols() == 0) return;
-  K_inverse_U_ = ldlt_.solve(U_);
-  Capacitance capacitance(c.size(), c.size());
-  for (Eigen::Index i = 0; i < c.size(); ++i)
-    for (Eigen::Index j = 0; j < c.size(); ++j)
-      capacitance(i, j) = Scalar(i == j ? 1 / c[i] : 0.0) + U_.col(i).dot(K_inverse_U_.col(j));
-  capacitance_.compute(capacitance);
-  if (capacitance_.rank() < c.size())
-    throw RefusedProblem("the global quadratic form with the barycentre term is singular: the minimiser is not unique");
+  if (!dense_ || dense_->grounded) return;
+  typename SparseFactor<Scalar>::Block y = alpha_;
+  factor_->solve_in_place(y);
+  K_inverse_alpha_ = y.col(0);
+  alpha_K_alpha_ = alpha_.dot(K_inverse_alpha_);
 }
 
 template <class Scalar>
 typename SparseMinimiser<Scalar>::Dense SparseMinimiser<Scalar>::solve(const Dense& R) const {
-  Dense X = ldlt_.solve(R);
-  for (Eigen::Index j = 0; j < X.cols() && U_.cols() > 0; ++j) {  // column by column: the capacitance is tiny
-    const Eigen::Matrix<Scalar, Eigen::Dynamic, 1> y =
-        capacitance_.solve(Eigen::Matrix<Scalar, Eigen::Dynamic, 1>(U_.adjoint() * X.col(j)));
-    X.col(j) -= K_inverse_U_.lazyProduct(y);
+  typename SparseFactor<Scalar>::Block X = R;
+  if (!dense_) {
+    factor_->solve_in_place(X);
+    return X;
   }
+  const double c = dense_->weight;
+  if (!dense_->grounded) {  // z = x − y (c αᵀx) / (1 + c αᵀy)
+    factor_->solve_in_place(X);
+    for (Eigen::Index j = 0; j < X.cols(); ++j)
+      X.col(j) -= K_inverse_alpha_ * (c * alpha_.dot(X.col(j)) / (Scalar(1) + c * alpha_K_alpha_));
+    return X;
+  }
+  const Scalar s = alpha_.sum();
+  const Eigen::Matrix<Scalar, 1, Eigen::Dynamic> S = X.colwise().sum();
+  X -= alpha_ * (S / s);  // K z = b − α S / s
+  X.row(0).setZero();     // grounded: w_0 = 0
+  factor_->solve_in_place(X);
+  const Eigen::Matrix<Scalar, 1, Eigen::Dynamic> delta = (S / (c * s) - alpha_.transpose() * X) / s;
+  X.rowwise() += delta;  // z = w + δ 1
   return X;
 }
 

@@ -1,24 +1,34 @@
 #pragma once
-// Solves G X = R for G = K + U diag(c) Uᵀ: K sparse Hermitian positive definite (real symmetric, or complex
-// Hermitian for the complex form of hermitian_form.hpp), factored by a sparse LDLᴴ whose symbolic analysis
-// (fill-reducing ordering, elimination tree) is done once for the pattern and reused by every numeric
-// factorisation; U a few dense real columns (the barycentre term of Kaji §4, whose Σ v_k / n couples all
-// vertices) handled by the Sherman–Morrison–Woodbury identity
-//     G⁻¹ = K⁻¹ − K⁻¹U (diag(c)⁻¹ + UᴴK⁻¹U)⁻¹ UᴴK⁻¹.
-// Eigen's SimplicialLDLT rather than CHOLMOD, by measurement on the octopus mesh's complex E^R matrix
-// (34,458 unknowns, 0.64 M non-zeros in L; one thread, AMD EPYC, g++ 12 -O3 -march=native): numeric
-// factorisation 23 ms (built with -fcx-fortran-rules, see CMakeLists.txt; 61–99 ms without) against
-// 63–72 ms for CholmodSupernodalLLT with OpenBLAS and 77–115 ms for SimplicialLDLT with a METIS ordering.
-// CHOLMOD's supernodes stay small on a planar mesh, so its BLAS-3 kernels do not pay for their overhead;
-// and Eigen's solver needs no further library.
+// Solves G z = b for G = K + c α αᴴ: K the sparse part of the global error's form (the triangles and the
+// sparse constraint terms; Hermitian, real or complex, hermitian_form.hpp), factored by a SparseFactor
+// (sparse_factor.hpp, the back-end chosen by size), and c |αᵀz − r|² the one dense term, the barycentre of
+// Kaji §4, whose Σ z_k / n couples all vertices. The dense term is handled exactly, with no rank test:
+//   - grounded (K 1 = 0: no sparse term fixes translation, the barycentre alone does). With s = Σ α_k and
+//     S = Σ b_k, summing the rows of G z = b gives c s (αᵀz) = S, so K z = b − α S / s: a consistent
+//     singular system, solved as K_0 w = b′ with K grounded at vertex 0 (its row and column 0 replaced by
+//     the diagonal entry, b′_0 = 0, so w_0 = 0 exactly), and z = w + δ 1 with δ = (S / (c s) − αᵀw) / s
+//     so that αᵀz = S / (c s). One solve per right-hand side, whatever the mesh's size or units.
+//   - K definite (a pinned vertex or locus fixes translation): Sherman–Morrison with the positive update,
+//     z = x − y (c αᵀx) / (1 + c αᵀy), x = K⁻¹b, y = K⁻¹α (solved once per factorisation); the
+//     denominator is at least 1, so this too needs no rank test.
+#include "theory/global/sparse_factor.hpp"
+
 #include <Eigen/Core>
-#include <Eigen/LU>
-#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
 #include <complex>
+#include <memory>
+#include <optional>
 
 namespace affinterp::global {
+
+/// The dense term c |αᵀz − r|² of G = K + c α αᵀ (the barycentre).
+struct DenseTerm {
+  Eigen::VectorXd alpha;
+  double weight = 0;  ///< c > 0
+  /// K 1 = 0 and Σ α ≠ 0: K is grounded at vertex 0 by the caller (FrameAssembly::matrix_at).
+  bool grounded = false;
+};
 
 template <class Scalar>
 class SparseMinimiser {
@@ -26,20 +36,30 @@ class SparseMinimiser {
   using SparseMatrix = Eigen::SparseMatrix<Scalar>;
   using Dense = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
 
-  /// The symbolic analysis for K's pattern (its lower triangle is read).
-  void analyse(const SparseMatrix& K);
-  /// The numeric factorisation of K (same pattern as analysed) and the Woodbury capacitance for U, c.
-  /// Throws RefusedProblem when G is singular or not positive definite: the minimiser is not unique.
-  void factorise(const SparseMatrix& K, const Eigen::MatrixXd& U, const Eigen::VectorXd& c);
-  /// G⁻¹ R.
+  SparseMinimiser() = default;
+  SparseMinimiser(const SparseMinimiser& other);
+  SparseMinimiser& operator=(const SparseMinimiser&) = delete;
+  SparseMinimiser(SparseMinimiser&&) noexcept = default;
+
+  /// The symbolic analysis for K's pattern (its lower triangle is read) on the back-end for its size, and
+  /// the dense term, if any.
+  void analyse(const SparseMatrix& K, std::optional<DenseTerm> dense);
+  /// The same on the named back-end (benchmarks).
+  void analyse(const SparseMatrix& K, std::optional<DenseTerm> dense, SparseBackEnd back_end);
+  /// The numeric factorisation of K (same pattern as analysed, grounded when the dense term says so).
+  /// Throws RefusedProblem when K is singular or not positive definite: the minimiser is not unique.
+  void factorise(const SparseMatrix& K);
+  /// G⁻¹ R, all columns in one solve.
   Dense solve(const Dense& R) const;
+  const SparseFactor<Scalar>& factor() const { return *factor_; }
 
  private:
-  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt_;
-  Dense U_, K_inverse_U_;
-  /// diag(c)⁻¹ + UᴴK⁻¹U: at most a few rows (indefinite, hence LU rather than LDLᴴ).
-  using Capacitance = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic, 0, 8, 8>;
-  Eigen::FullPivLU<Capacitance> capacitance_;
+  using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  std::unique_ptr<SparseFactor<Scalar>> factor_;
+  std::optional<DenseTerm> dense_;
+  Vector alpha_;             ///< α in the scalar type
+  Vector K_inverse_alpha_;   ///< y = K⁻¹α when K is definite
+  Scalar alpha_K_alpha_{0};  ///< αᵀy
 };
 
 extern template class SparseMinimiser<double>;

@@ -4,17 +4,24 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <cmath>
+
 namespace affinterp::global {
 namespace {
 
 /// Σ c LᵀL over the terms, L the 2×4 map (x, y, d) ↦ ℓ((xI + yJ)p + d) = x P + y JP + s d with
-/// P = Σ α_k p_k, s = Σ α_k.
+/// P = Σ α_k p_k, s = Σ α_k, p_k measured from the barycentre in units of the mesh's spread (the same
+/// motions, parameterised so that the form does not depend on the mesh's position or units).
 Eigen::MatrixXd constraint_on_similarity_motions(const Mesh& source, const std::vector<ConstraintTerm>& terms) {
+  const Eigen::Vector2d barycentre = source.vertices.rowwise().mean();
+  const double spread =
+      std::sqrt((source.vertices.colwise() - barycentre).squaredNorm() / static_cast<double>(source.vertex_count()));
   Eigen::MatrixXd form = Eigen::MatrixXd::Zero(4, 4);
   for (const ConstraintTerm& term : terms) {
     Eigen::Vector2d P = Eigen::Vector2d::Zero();
     double s = 0;
-    for (const auto& [k, alpha] : term.coefficients) P += alpha * source.vertices.col(k), s += alpha;
+    for (const auto& [k, alpha] : term.coefficients)
+      P += alpha * (source.vertices.col(k) - barycentre) / spread, s += alpha;
     Eigen::Matrix<double, 2, 4> L;
     L << P.x(), -P.y(), s, 0, P.y(), P.x(), 0, s;
     form += term.weight * L.transpose() * L;
@@ -22,9 +29,10 @@ Eigen::MatrixXd constraint_on_similarity_motions(const Mesh& source, const std::
   return form;
 }
 
+/// A ratio of eigenvalues, so that it does not depend on the constraints' common weight.
 bool definite(const Eigen::MatrixXd& form) {
   const Eigen::VectorXd eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(form).eigenvalues();
-  return eigenvalues.minCoeff() > 1e-12 * std::max(1.0, eigenvalues.maxCoeff());
+  return eigenvalues.minCoeff() > 1e-12 * eigenvalues.maxCoeff();
 }
 
 }  // namespace

@@ -140,12 +140,18 @@ std::string to_string(const Polynomial& p) {
     std::string factors;
     for (const auto& [name, e] : m) {
       if (!factors.empty()) factors += "*";
-      factors += name + (e > 1 ? "^" + std::to_string(e) : "");
+      factors += name;
+      if (e > 1) {  // appended piece by piece: GCC 12 misreports "^" + s (-Wrestrict)
+        factors += '^';
+        factors += std::to_string(e);
+      }
     }
     if (factors.empty())
       text += exact::to_string(magnitude);
-    else
-      text += (magnitude == 1 ? "" : exact::to_string(magnitude) + "*") + factors;
+    else {
+      if (magnitude != 1) text += exact::to_string(magnitude) + "*";
+      text += factors;
+    }
   }
   return text;
 }

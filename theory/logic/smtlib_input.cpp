@@ -78,7 +78,7 @@ std::string to_smtlib(const Formula& f, const std::string& title) {
                                  : exists(p.prefix[i].variables, std::move(body));
   std::string text = "; " + title + "\n(set-logic " + (first == p.prefix.size() ? "QF_NRA" : "NRA") + ")\n";
   for (const std::string& v : declared) text += "(declare-const " + v + " Real)\n";
-  return text + "(assert " + formula_text(body) + ")\n(check-sat)\n(get-model)\n";
+  return text + "(assert " + formula_text(body) + ")\n(check-sat)\n";
 }
 
 }  // namespace affinterp::logic

@@ -12,7 +12,9 @@ namespace affinterp::logic {
 std::string smtlib_term(const Polynomial& p);
 
 /// The SMT-LIB 2 script deciding the sentence `f`: "; title", set-logic, declarations, assert,
-/// (check-sat) and (get-model) (Z3 prints the model of a satisfiable sentence: a witness).
+/// (check-sat). No (get-model): it is an error after "unsat", and a transcript with an error decides nothing;
+/// the deciders print the model of a satisfiable sentence (a witness) when run with `z3 -model` or
+/// `cvc5 --dump-models`.
 std::string to_smtlib(const Formula& f, const std::string& title);
 
 }  // namespace affinterp::logic

@@ -8,6 +8,7 @@ void add_machine_context() {
   const nlohmann::json environment = environment_description();
   for (const char* key : {"cpu", "compiler", "flags", "eigen", "os"})
     benchmark::AddCustomContext(std::string("affinterp_") + key, environment.at(key).get<std::string>());
+  benchmark::AddCustomContext("affinterp_cpu_flags", cpu_flags());
 }
 
 int run_benchmarks(int argc, char** argv) {

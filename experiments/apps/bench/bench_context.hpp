@@ -8,12 +8,12 @@
 namespace affinterp::bench {
 
 /// Repetitions of every benchmark a verdict reads (the speed claims and the engine's targets): their 95%
-/// bootstrap intervals need at least 10 (experiments/claims/measured.hpp). Set in code, so that it overrides
+/// bootstrap intervals need at least 10 (experiments/bench/measured.hpp). Set in code, so that it overrides
 /// --benchmark_repetitions; the benchmarks display only the aggregates on the console but keep every
 /// repetition in the JSON file (DisplayAggregatesOnly).
 inline constexpr int kRepetitions = 10;
 
-/// Adds the CPU model, compiler, flags and library versions to the benchmark JSON's "context", so
+/// Adds the CPU model and feature flags, compiler, flags and library versions to the benchmark JSON's "context", so
 /// that speed verdicts can name the machine that measured them.
 void add_machine_context();
 

@@ -8,6 +8,10 @@
 // /proc/self/clear_refs) before each benchmark builds its Interpolation, so each counter is that
 // benchmark's own peak of the whole process (the cached meshes included). Targets at 1M triangles on 2 cores:
 // set-up ≤ 5 s, E^F ≤ 0.1 s and E^R ≤ 0.6 s per frame, peak ≤ 2 GB (experiments/claims/engine_scale.hpp).
+// scale_* with the back-end the engine picks by size (theory/global/sparse_factor.hpp, what the report's
+// engine_scale reads); backend_* the same on each back-end by name (…/simplicial, …/cholmod when built in),
+// side by side; and batch_frames/E/size: vertices_at(times) of 8 frames at once, in parallel on the
+// machine's cores (frames_per_s, the amortised cost).
 // Run with --benchmark_filter to leave out the largest size (it takes minutes).
 #include "experiments/apps/bench/bench_context.hpp"
 #include "experiments/inputs/shapes/curl.hpp"
@@ -15,11 +19,13 @@
 #include "experiments/inputs/shapes/subdivide.hpp"
 #include "theory/global/gauge.hpp"
 #include "theory/global/interpolation.hpp"
+#include "theory/global/sparse_factor.hpp"
 
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,9 +50,11 @@ const shapes::MeshPairShapes& workload(int levels) {
   return pairs[static_cast<std::size_t>(levels)];
 }
 
-global::InterpolationOptions options_for(Energy energy, const shapes::MeshPairShapes& pair) {
+global::InterpolationOptions options_for(Energy energy, const shapes::MeshPairShapes& pair,
+                                         std::optional<global::SparseBackEnd> back_end) {
   global::InterpolationOptions options;
   options.energy = energy;
+  options.back_end = back_end;
   options.area_weighted = true;
   options.constraints.barycentre = global::BarycentreLocus{};
   if (const auto edge = global::default_edge_direction(pair.source, pair.target, options))
@@ -73,9 +81,9 @@ void report(benchmark::State& state, const shapes::MeshPairShapes& pair, bool pe
   state.SetLabel(peak_is_own ? "peak of this benchmark" : "peak of the process so far");
 }
 
-void set_up(benchmark::State& state, Energy energy, int levels) {
+void set_up(benchmark::State& state, Energy energy, int levels, std::optional<global::SparseBackEnd> back_end) {
   const shapes::MeshPairShapes& pair = workload(levels);
-  const global::InterpolationOptions options = options_for(energy, pair);
+  const global::InterpolationOptions options = options_for(energy, pair, back_end);
   const bool own = reset_peak_memory();
   for (auto _ : state) {
     global::Interpolation interpolation(pair.source, pair.target, options);
@@ -84,9 +92,9 @@ void set_up(benchmark::State& state, Energy energy, int levels) {
   report(state, pair, own);
 }
 
-void frame(benchmark::State& state, Energy energy, int levels) {
+void frame(benchmark::State& state, Energy energy, int levels, std::optional<global::SparseBackEnd> back_end) {
   const shapes::MeshPairShapes& pair = workload(levels);
-  const global::InterpolationOptions options = options_for(energy, pair);
+  const global::InterpolationOptions options = options_for(energy, pair, back_end);
   const bool own = reset_peak_memory();
   const global::Interpolation interpolation(pair.source, pair.target, options);
   int k = 0;
@@ -97,23 +105,46 @@ void frame(benchmark::State& state, Energy energy, int levels) {
   report(state, pair, own);
 }
 
+/// 8 frames per iteration through vertices_at(times); time per frame = iteration time / 8.
+void frames_batched(benchmark::State& state, Energy energy, int levels, std::optional<global::SparseBackEnd> back_end) {
+  const shapes::MeshPairShapes& pair = workload(levels);
+  const global::InterpolationOptions options = options_for(energy, pair, back_end);
+  const bool own = reset_peak_memory();
+  const global::Interpolation interpolation(pair.source, pair.target, options);
+  constexpr int batch = 8;
+  int k = 0;
+  for (auto _ : state) {
+    std::vector<double> times;
+    for (int j = 0; j < batch; ++j) times.push_back((k++ % 60 + 0.5) / 60);
+    benchmark::DoNotOptimize(interpolation.vertices_at(times).data());
+  }
+  state.counters["frames_per_s"] = benchmark::Counter(batch, benchmark::Counter::kIsIterationInvariantRate);
+  report(state, pair, own);
+}
+
 void register_all() {
+  std::vector<std::optional<global::SparseBackEnd>> back_ends = {std::nullopt, global::SparseBackEnd::simplicial};
+  if (global::has_cholmod()) back_ends.push_back(global::SparseBackEnd::cholmod);
   for (int levels = 0; levels <= 2; ++levels) {
     const std::string size = std::to_string(workload(levels).source.triangle_count());
-    for (const Energy energy : {Energy::frobenius, Energy::similarity}) {
-      const std::string e = global::to_string(energy);
-      // three repetitions of at least half a second each (one iteration at 1M): the machine is shared
-      benchmark::RegisterBenchmark(("scale_setup/" + e + "/" + size).c_str(), set_up, energy, levels)
-          ->Unit(benchmark::kMillisecond)
-          ->MinTime(0.5)
-          ->Repetitions(3)
-          ->ReportAggregatesOnly(true);
-      benchmark::RegisterBenchmark(("scale_frame/" + e + "/" + size).c_str(), frame, energy, levels)
-          ->Unit(benchmark::kMillisecond)
-          ->MinTime(0.5)
-          ->Repetitions(3)
-          ->ReportAggregatesOnly(true);
-    }
+    for (const Energy energy : {Energy::frobenius, Energy::similarity})
+      for (const std::optional<global::SparseBackEnd> back_end : back_ends) {
+        const std::string name = global::to_string(energy) + "/" + size;
+        const std::string prefix = back_end ? "backend_" : "scale_";
+        const std::string suffix = !back_end                                     ? ""
+                                   : *back_end == global::SparseBackEnd::cholmod ? "/cholmod"
+                                                                                 : "/simplicial";
+        std::vector<std::pair<std::string, decltype(&frame)>> kinds = {{prefix + "setup/", set_up},
+                                                                       {prefix + "frame/", frame}};
+        if (!back_end) kinds.emplace_back("batch_frames/", frames_batched);
+        // three repetitions of at least half a second each (one iteration at 1M): the machine is shared
+        for (const auto& [kind, function] : kinds)
+          benchmark::RegisterBenchmark((kind + name + suffix).c_str(), function, energy, levels, back_end)
+              ->Unit(benchmark::kMillisecond)
+              ->MinTime(0.5)
+              ->Repetitions(3)
+              ->ReportAggregatesOnly(true);
+      }
   }
 }
 

@@ -1,6 +1,9 @@
 // `affinterp claims`: run the checks, write claims.json and REPORT.md.
 #include "experiments/apps/cli/command.hpp"
+#include "experiments/bench/history.hpp"
 #include "experiments/claims/claims_json.hpp"
+#include "experiments/claims/engine_scale.hpp"
+#include "experiments/claims/engine_speed.hpp"
 #include "experiments/claims/registry.hpp"
 #include "experiments/claims/runner.hpp"
 #include "experiments/support/environment.hpp"
@@ -50,6 +53,18 @@ void write_file(const fs::path& file, const std::string& text) {
   if (!out) throw CommandFailed("cannot write " + file.string(), 1);
 }
 
+/// The global engine's speed (the latest run, and every recorded run) and scale, from the benchmark folder.
+EngineTables engine_tables(const RunContext& context) {
+  try {
+    EngineTables tables{engine_speed(context.bench_dir / "bench_interp.json"),
+                        engine_scale(context.bench_dir / "bench_scale.json", context)};
+    if (!tables.speed.is_null()) tables.speed["history"] = engine_speed_by_run(bench::runs_of(context.bench_dir));
+    return tables;
+  } catch (const std::runtime_error& e) {
+    throw CommandFailed(std::string("benchmark outputs: ") + e.what(), 1);
+  }
+}
+
 void run(const ClaimsOptions& options) {
   const ClaimRegistry& registry = registered_claims();
   if (options.list) return list_claims(registry);
@@ -83,8 +98,8 @@ void run(const ClaimsOptions& options) {
     throw CommandFailed(std::to_string(failed) + " check(s) failed to run; " + options.out + " left unchanged", 1);
 
   const fs::path previous_file = fs::path(options.out) / "claims.json";
-  const nlohmann::json document =
-      claims_document(registry, results, context, environment_description(), read_previous(previous_file));
+  const nlohmann::json document = claims_document(registry, results, context, environment_description(),
+                                                  read_previous(previous_file), engine_tables(context));
   write_file(staged.staging() / "claims.json", document.dump(2) + "\n");
   write_file(staged.staging() / "REPORT.md", report::render_markdown(document));
   staged.commit();

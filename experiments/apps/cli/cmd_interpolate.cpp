@@ -2,6 +2,7 @@
 // OBJ frames, a filmstrip (PNG + SVG), an animated GIF, an interactive viewer and per-frame metrics.
 #include "experiments/apps/cli/command.hpp"
 #include "experiments/inputs/constraint_spec.hpp"
+#include "experiments/inputs/frames_npy.hpp"
 #include "experiments/inputs/interpolation_request.hpp"
 #include "experiments/inputs/mesh_file.hpp"
 #include "experiments/inputs/mesh_pair.hpp"
@@ -19,11 +20,13 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <future>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <thread>
 
 namespace affinterp::cli {
 
@@ -31,14 +34,24 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// The engine's defaults (theory/global/options.hpp decides them; the options below only spell them).
+const global::InterpolationOptions engine_defaults{};
+
+std::string default_time_range() {
+  std::ostringstream range;
+  range << engine_defaults.t_begin << ':' << engine_defaults.t_end;
+  return range.str();
+}
+
 struct InterpolateOptions {
   std::string source, target, out;
   int frames = 30;
   io::InterpolationRequest engine;  ///< the engine's options and their defaults, shared with the Python module
   std::string weights_file;
   bool allow_flipped_target = false, figures = true;
-  std::string time_range = "0:1";
+  std::string time_range = default_time_range();
   std::optional<std::string> times;  ///< --times T1,T2,...: exactly these frames (not with --frames, --time-range)
+  std::string format = "obj";        ///< frame files: obj (one per frame) or npy (frames.npy, all of them)
 };
 
 /// Frames drawn in the filmstrip: at most 8, evenly spread, first and last included.
@@ -177,26 +190,50 @@ void run(const InterpolateOptions& o) {
   std::vector<plots::FrameSeries> energy_series = {{energy_name, {}}};  // then the parts, as `view` reads them
   global::Mesh frame = pair.source;  // frames keep the files' face list, clockwise ones included
   if (pair.reoriented) global::reverse_orientation(frame);
-  for (int k = 0; k < frame_count; ++k) {
-    const double t = times[static_cast<std::size_t>(k)];
-    frame.vertices = interpolation->vertices_at(t);
-    io::write_obj(frame, staged.staging() / frame_name(k));
-    const global::FrameEnergy energy = interpolation->energy_at(t, frame.vertices);
-    nlohmann::json entry = {{"index", k}, {"t", t}, {"file", frame_name(k)}, {"energy", finite_or_null(energy.total)}};
-    energy_series[0].values.push_back(energy.total);
-    if (energy_has_parts(options)) {
-      entry["energy_parts"] = energy_parts_json(energy, options);
-      if (k == 0)
-        for (const auto& [name, value] : entry["energy_parts"].items()) energy_series.push_back({name, {}});
-      for (std::size_t s = 1; s < energy_series.size(); ++s)
-        energy_series[s].values.push_back(entry["energy_parts"][energy_series[s].name].get<double>());
+  std::optional<io::NpyFrameWriter> npy;
+  if (o.format == "npy")
+    npy.emplace(staged.staging() / "frames.npy", static_cast<std::size_t>(frame_count), pair.source.vertex_count());
+  // Frames in batches of one per hardware thread (vertices_at(times) solves them in parallel), the next
+  // batch solved while this thread writes the last one and computes its energy and metrics.
+  const std::size_t batch = std::max(1u, std::thread::hardware_concurrency());
+  auto solve = [&](std::size_t first) {
+    const std::size_t last = std::min(times.size(), first + batch);
+    return interpolation->vertices_at(std::vector<double>(times.begin() + static_cast<std::ptrdiff_t>(first),
+                                                          times.begin() + static_cast<std::ptrdiff_t>(last)));
+  };
+  std::future<std::vector<Eigen::Matrix2Xd>> next = std::async(std::launch::async, solve, 0);
+  for (std::size_t first = 0; first < times.size(); first += batch) {
+    std::vector<Eigen::Matrix2Xd> solved = next.get();
+    if (first + batch < times.size()) next = std::async(std::launch::async, solve, first + batch);
+    for (std::size_t j = 0; j < solved.size(); ++j) {
+      const int k = static_cast<int>(first + j);
+      const double t = times[first + j];
+      frame.vertices = std::move(solved[j]);
+      if (npy)
+        npy->append(frame.vertices);
+      else
+        io::write_obj(frame, staged.staging() / frame_name(k));
+      const global::FrameEnergy energy = interpolation->energy_at(t, frame.vertices);
+      nlohmann::json entry = {{"index", k},
+                              {"t", t},
+                              {"file", npy ? "frames.npy" : frame_name(k)},
+                              {"energy", finite_or_null(energy.total)}};
+      energy_series[0].values.push_back(energy.total);
+      if (energy_has_parts(options)) {
+        entry["energy_parts"] = energy_parts_json(energy, options);
+        if (k == 0)
+          for (const auto& [name, value] : entry["energy_parts"].items()) energy_series.push_back({name, {}});
+        for (std::size_t s = 1; s < energy_series.size(); ++s)
+          energy_series[s].values.push_back(entry["energy_parts"][energy_series[s].name].get<double>());
+      }
+      const global::FrameMetrics metrics = global::frame_metrics(pair.source, frame.vertices);
+      entry.update(metrics_json(metrics));
+      frames.push_back(entry);
+      if (o.figures) run.times.push_back(t), run.frames.push_back(frame.vertices), run.metrics.push_back(metrics);
+      if (progress) progress->advance();
     }
-    const global::FrameMetrics metrics = global::frame_metrics(pair.source, frame.vertices);
-    entry.update(metrics_json(metrics));
-    frames.push_back(entry);
-    if (o.figures) run.times.push_back(t), run.frames.push_back(frame.vertices), run.metrics.push_back(metrics);
-    if (progress) progress->advance();
   }
+  if (npy) npy->close();
 
   nlohmann::json document = {{"source", o.source},
                              {"target", o.target},
@@ -217,6 +254,7 @@ void run(const InterpolateOptions& o) {
                                {"edge_directions", o.engine.edges},
                                {"barycentre_locus", o.engine.barycentre},
                                {"time_range", {options.t_begin, options.t_end}},
+                               {"format", o.format},
                                {"times", o.times ? nlohmann::json(times) : nlohmann::json(nullptr)}}},
                              {"frames", frames}};
   if (default_edge)
@@ -241,11 +279,13 @@ void run(const InterpolateOptions& o) {
   progress.reset();  // ends the progress line before any other message
   std::ofstream(staged.staging() / "metrics.json") << document.dump(2) << "\n";
 
-  // Earlier frames beyond this run's count would mix two runs: remove them, then move the new files in.
+  // Earlier frames beyond this run's count, or in the other format, would mix two runs: remove them, then
+  // move the new files in.
   std::error_code ignored;
   if (fs::is_directory(o.out))
     for (const auto& entry : fs::directory_iterator(o.out))
-      if (entry.path().filename().string().starts_with("frame_") && entry.path().extension() == ".obj")
+      if ((entry.path().filename().string().starts_with("frame_") && entry.path().extension() == ".obj") ||
+          entry.path().filename() == "frames.npy")
         fs::remove(entry.path(), ignored);
   staged.commit();
   int worst = 0;
@@ -260,7 +300,8 @@ void add_interpolate_command(CLI::App& app) {
   auto o = std::make_shared<InterpolateOptions>();
   CLI::App* cmd = app.add_subcommand(
       "interpolate",
-      "Interpolate between two compatible 2D triangle meshes (Kaji et al. 2012, §3-4): writes OUT/frame_0000.obj ..., "
+      "Interpolate between two compatible 2D triangle meshes (Kaji et al. 2012, §3-4): writes OUT/frame_0000.obj ... "
+      "(or OUT/frames.npy with --format npy), "
       "OUT/filmstrip.png/.svg, OUT/animation.gif, OUT/viewer.html (interactive; viewer.html#frame=K opens at frame K) "
       "and "
       "OUT/metrics.json (per frame: t, the minimised energy E_t of Kaji §4 with its parts for a blend or --symmetric, "
@@ -315,6 +356,11 @@ void add_interpolate_command(CLI::App& app) {
       ->excludes(time_range);
   cmd->add_flag("--allow-flipped-target", o->allow_flipped_target,
                 "Accept target triangles flipped against the source");
+  cmd->add_option("--format", o->format,
+                  "Frame files: obj (OUT/frame_0000.obj ...) or npy (OUT/frames.npy, all frames as one float64 array "
+                  "of shape (frames, vertices, 2): numpy.load; for large meshes)")
+      ->check(CLI::IsMember({"obj", "npy"}))
+      ->capture_default_str();
   cmd->add_flag("!--no-figures", o->figures, "Write only frames and metrics.json (no filmstrip, GIF or viewer)");
   cmd->callback([o] { run(*o); });
 }

@@ -24,6 +24,8 @@ void add_shapes_command(CLI::App& app);
 void add_interpolate_command(CLI::App& app);
 void add_view_command(CLI::App& app);
 void add_decide_command(CLI::App& app);
+void add_bench_command(CLI::App& app);
+void add_prove_command(CLI::App& app);
 void add_pair_command(CLI::App& app);
 
 }  // namespace affinterp::cli

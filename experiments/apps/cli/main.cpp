@@ -21,6 +21,8 @@ int main(int argc, char** argv) {
   add_interpolate_command(app);
   add_view_command(app);
   add_decide_command(app);
+  add_bench_command(app);
+  add_prove_command(app);
   add_pair_command(app);
 
   try {

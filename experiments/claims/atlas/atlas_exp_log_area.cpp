@@ -1,5 +1,6 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
+#include "experiments/proofs/citations.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
@@ -22,10 +23,10 @@ const ClaimDeclaration claim{{
 //   empty because the condition is `true`.
 // Sizes: the sentence is the same at every size; the suite has no exact decider for this cell.
 
-Outcome check(const ClaimContext& ctx) {
+AtlasProof proof() {
   using logic::Polynomial;
   const proofs::AtlasCell& cell = proofs::atlas_cell(proofs::Homotopy::exp_log, proofs::Notion::area);
-  const AtlasProof proof{
+  return AtlasProof{
       .scope = cell.domain_words,
       .method =
           "Lemma L10 (exp-log): det A(t) = (det S)^t = exp(t log det S), positive with a derivative of one "
@@ -36,8 +37,13 @@ Outcome check(const ClaimContext& ctx) {
                                    !logic::greater(cell.macros.at("det"), 0))},
       .z3_only = {},
       .identities = {},
+      .cites = std::string(proofs::citations::exponential),
   };
-  return atlas_outcome(ctx, cell, proof, {{"x", "y", 0, 4, {{"h", Rational(1, 2)}}, "h = 1/2"}});
+}
+
+Outcome check(const ClaimContext& ctx) {
+  return atlas_outcome(ctx, proofs::atlas_cell(proofs::Homotopy::exp_log, proofs::Notion::area), proof(),
+                       {{"x", "y", 0, 4, {{"h", Rational(1, 2)}}, "h = 1/2"}});
 }
 
 }  // namespace

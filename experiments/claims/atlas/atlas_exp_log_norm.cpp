@@ -1,5 +1,6 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
+#include "experiments/proofs/citations.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
@@ -23,7 +24,7 @@ const ClaimDeclaration claim{{
 //   eigenvalues as variables (λ1 + λ2 = tr S, λ1λ2 = det S, λi > 0; they exist by the spectral theorem, L13).
 // Sizes: the sentences are the same at every size; the suite has no exact decider for this cell.
 
-Outcome check(const ClaimContext& ctx) {
+AtlasProof proof() {
   using logic::Polynomial;
   const proofs::AtlasCell& cell = proofs::atlas_cell(proofs::Homotopy::exp_log, proofs::Notion::norm);
   const Polynomial l1 = Polynomial::variable("l1"), l2 = Polynomial::variable("l2");
@@ -32,7 +33,7 @@ Outcome check(const ClaimContext& ctx) {
                                      logic::equal(l1 * l2, cell.macros.at("det"));
   const logic::Formula property = logic::greater_equal((l1 - Polynomial(1)) * (l2 - Polynomial(1)), 0);
   const logic::Formula condition = cell.condition_formula();
-  const AtlasProof proof{
+  return AtlasProof{
       .scope = cell.domain_words,
       .method =
           "Lemma L10 (exp-log): ||S^t v||^2 = l1^(2t) w1^2 + l2^(2t) w2^2 (w = Q^T v) is monotone for every v "
@@ -46,8 +47,13 @@ Outcome check(const ClaimContext& ctx) {
                                    eigenvalues && !condition && property, {"l1", "l2"})},
       .z3_only = {},
       .identities = {},
+      .cites = std::string(proofs::citations::exponential),
   };
-  return atlas_outcome(ctx, cell, proof, {{"x", "y", 0, 4, {{"h", Rational(1, 2)}}, "h = 1/2"}});
+}
+
+Outcome check(const ClaimContext& ctx) {
+  return atlas_outcome(ctx, proofs::atlas_cell(proofs::Homotopy::exp_log, proofs::Notion::norm), proof(),
+                       {{"x", "y", 0, 4, {{"h", Rational(1, 2)}}, "h = 1/2"}});
 }
 
 }  // namespace

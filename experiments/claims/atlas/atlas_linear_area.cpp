@@ -1,6 +1,6 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
-#include "experiments/proofs/goodness_levels.hpp"
+#include "experiments/proofs/goodness_formulas.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
@@ -23,22 +23,25 @@ const ClaimDeclaration claim{{
 //   monotone f with f(0) = 1 is f(1) = det A > 0 (Lemma L2). Two sentences in a, b, c, d.
 // Sizes: the sentences are the same at every size; random points 200 (quick) / 2000 (full).
 
-Outcome check(const ClaimContext& ctx) {
+AtlasProof proof() {
   using logic::Polynomial;
   const proofs::AtlasCell& cell = proofs::atlas_cell(proofs::Homotopy::linear, proofs::Notion::area);
   const proofs::PolyMat2 A{
       {{Polynomial::variable("a"), Polynomial::variable("b")}, {Polynomial::variable("c"), Polynomial::variable("d")}}};
-  const AtlasProof proof{
+  return AtlasProof{
       .scope = cell.domain_words,
       .method =
           "Def 2.2.1 for det((1-t)I + tA) at level E: monotone iff the derivative keeps one sign on [0, 1] "
           "(Lemma L1), read at t = 0 and 1 because it is affine, with positivity from det A > 0 (Lemma L2)",
-      .sentences = {cond_not_prop(cell, "E", proofs::area_level_E(A)),
-                    prop_not_cond(cell, "E", proofs::area_level_E(A))},
+      .sentences = condition_sentences(cell, "E", proofs::area_property(A, "E")),
       .z3_only = {},
       .identities = {},
   };
-  return atlas_outcome(ctx, cell, proof, {{"a", "d", -1, 4, {{"b", 0}, {"c", Rational(1, 2)}}, "b = 0, c = 1/2"}});
+}
+
+Outcome check(const ClaimContext& ctx) {
+  return atlas_outcome(ctx, proofs::atlas_cell(proofs::Homotopy::linear, proofs::Notion::area), proof(),
+                       {{"a", "d", -1, 4, {{"b", 0}, {"c", Rational(1, 2)}}, "b = 0, c = 1/2"}});
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
-#include "experiments/proofs/goodness_levels.hpp"
+#include "experiments/proofs/citations.hpp"
+#include "experiments/proofs/condition_sentences.hpp"
+#include "experiments/proofs/goodness_formulas.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
@@ -18,14 +20,14 @@ const ClaimDeclaration claim{{
 }};
 
 // Reading: Def 2.2.2 for ‖((1−t)I + tA)v‖.
-// Method: in a, b, c, d neither decider finishes (research FINDINGS §8), so first Lemma L7: conjugating A by a
+// Method: in a, b, c, d neither decider finishes within its limits, so first Lemma L7: conjugating A by a
 //   rotation O changes neither notion ((1−t)I + tOᵀAO = Oᵀ((1−t)I + tA)O, and v ↦ Ov is a bijection of the
 //   circle) nor the condition (sym and AᵀA are conjugated alike, and congruence keeps ⪰); the rotation that
 //   diagonalises sym(A) brings A to [[p, −k], [k, r]] (p, r the eigenvalues of sym(A), k = (c − b)/2; the skew
 //   part commutes with rotations). Then level N (Lemmas L3, L4, L6, L8) in p, r, k with ν quantified.
 // Sizes: the sentences are the same at every size; random points 200 (quick) / 2000 (full) in a, b, c, d.
 
-Outcome check(const ClaimContext& ctx) {
+AtlasProof proof() {
   using logic::Polynomial;
   const proofs::AtlasCell& cell = proofs::atlas_cell(proofs::Homotopy::linear, proofs::Notion::norm);
   const Polynomial p = Polynomial::variable("p"), r = Polynomial::variable("r"), k = Polynomial::variable("k");
@@ -35,11 +37,8 @@ Outcome check(const ClaimContext& ctx) {
        std::vector<std::pair<std::string, Polynomial>>{{"a", p}, {"b", -k}, {"c", k}, {"d", r}})
     condition = logic::substitute(condition, name, by);
   const logic::Formula domain = logic::greater(p * r + k * k, 0);  // det A > 0
-  const logic::Formula property = proofs::norm_level_N(normal_form, "nu");
-  const auto sentence = [&](const std::string& name, const std::string& meaning, const logic::Formula& set) {
-    return proofs::Sentence{name, meaning, logic::exists({"p", "r", "k"}, domain && set), {}};
-  };
-  const AtlasProof proof{
+  const logic::Formula property = proofs::norm_property(normal_form, "N");
+  return AtlasProof{
       .scope = cell.domain_words,
       .method =
           "Lemma L7: conjugation by a rotation changes neither Def 2.2.2 nor the condition, and brings A to the "
@@ -47,18 +46,16 @@ Outcome check(const ClaimContext& ctx) {
           "level N: the squared norm (L4) has an affine t-derivative with non-negative slope, so it is monotone "
           "for v unless P(v) < 0 < Q(v), P = sym(A - I), Q = P + (A - I)^T(A - I) (L3); homogeneous in v "
           "(L6); no such v iff Q <= 0 or P - nu Q >= 0 for some nu >= 0 (Dines 1941, L8)",
-      .sentences = {sentence(
-                        "conj.cond-not-prop.N",
-                        "a normal form [[p, -k], [k, r]] where the condition holds and the property (level N) fails",
-                        condition && !property),
-                    sentence(
-                        "conj.prop-not-cond.N",
-                        "a normal form [[p, -k], [k, r]] where the property (level N) holds and the condition fails",
-                        !condition && property)},
+      .sentences = {proofs::cond_not_prop("conj.", "N", {"p", "r", "k"}, domain, condition, property),
+                    proofs::prop_not_cond("conj.", "N", {"p", "r", "k"}, domain, condition, property)},
       .z3_only = {},
       .identities = {},
+      .cites = std::string(proofs::citations::dines),
   };
-  return atlas_outcome(ctx, cell, proof,
+}
+
+Outcome check(const ClaimContext& ctx) {
+  return atlas_outcome(ctx, proofs::atlas_cell(proofs::Homotopy::linear, proofs::Notion::norm), proof(),
                        {{"a", "d", -1, 3, {{"b", Rational(1, 4)}, {"c", Rational(1, 4)}}, "b = c = 1/4"}});
 }
 

@@ -1,6 +1,6 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
-#include "experiments/proofs/goodness_levels.hpp"
+#include "experiments/proofs/goodness_formulas.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
@@ -21,23 +21,26 @@ const ClaimDeclaration claim{{
 // Method: level E (Lemmas L1, L2, as for atlas.linear.area). Two quantifier-free sentences in x, y, h.
 // Sizes: the sentences are the same at every size; random points 200 (quick) / 2000 (full).
 
-Outcome check(const ClaimContext& ctx) {
+AtlasProof proof() {
   using logic::Polynomial;
   const proofs::AtlasCell& cell = proofs::atlas_cell(proofs::Homotopy::polar, proofs::Notion::area);
   const Polynomial h = Polynomial::variable("h");
   const proofs::PolyMat2 S{{{Polynomial::variable("x"), h}, {h, Polynomial::variable("y")}}};
-  const AtlasProof proof{
+  return AtlasProof{
       .scope = cell.domain_words,
       .method =
           "Def 2.2.1 for det((1-t)I + tS) (the rotation has determinant 1, Lemma L5) at level E: monotone iff "
           "the derivative keeps one sign on [0, 1] (Lemma L1), read at t = 0 and 1 because it is affine, with "
           "positivity from det > 0 at t = 1 (Lemma L2)",
-      .sentences = {cond_not_prop(cell, "E", proofs::area_level_E(S)),
-                    prop_not_cond(cell, "E", proofs::area_level_E(S))},
+      .sentences = condition_sentences(cell, "E", proofs::area_property(S, "E")),
       .z3_only = {},
       .identities = {},
   };
-  return atlas_outcome(ctx, cell, proof, {{"x", "y", 0, 4, {{"h", Rational(1, 2)}}, "h = 1/2"}});
+}
+
+Outcome check(const ClaimContext& ctx) {
+  return atlas_outcome(ctx, proofs::atlas_cell(proofs::Homotopy::polar, proofs::Notion::area), proof(),
+                       {{"x", "y", 0, 4, {{"h", Rational(1, 2)}}, "h = 1/2"}});
 }
 
 }  // namespace

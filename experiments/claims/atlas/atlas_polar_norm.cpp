@@ -1,6 +1,7 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
-#include "experiments/proofs/goodness_levels.hpp"
+#include "experiments/proofs/citations.hpp"
+#include "experiments/proofs/goodness_formulas.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
@@ -24,24 +25,28 @@ const ClaimDeclaration claim{{
 //   with ν quantified.
 // Sizes: the sentences are the same at every size; random points 200 (quick) / 2000 (full).
 
-Outcome check(const ClaimContext& ctx) {
+AtlasProof proof() {
   using logic::Polynomial;
   const proofs::AtlasCell& cell = proofs::atlas_cell(proofs::Homotopy::polar, proofs::Notion::norm);
   const Polynomial h = Polynomial::variable("h");
   const proofs::PolyMat2 S{{{Polynomial::variable("x"), h}, {h, Polynomial::variable("y")}}};
-  const AtlasProof proof{
+  return AtlasProof{
       .scope = cell.domain_words,
       .method =
           "Def 2.2.2 for ((1-t)I + tS)v (the rotation is orthogonal, Lemma L5) at level N: the squared norm "
           "(L4) has an affine t-derivative with non-negative slope, so it is monotone for v unless "
           "P(v) < 0 < Q(v), P = sym(S - I), Q = P + (S - I)^2 (L3); homogeneous in v (L6); no such v iff "
           "Q <= 0 or P - nu Q >= 0 for some nu >= 0 (Dines 1941, L8)",
-      .sentences = {cond_not_prop(cell, "N", proofs::norm_level_N(S, "nu")),
-                    prop_not_cond(cell, "N", proofs::norm_level_N(S, "nu"))},
+      .sentences = condition_sentences(cell, "N", proofs::norm_property(S, "N")),
       .z3_only = {},
       .identities = {},
+      .cites = std::string(proofs::citations::dines),
   };
-  return atlas_outcome(ctx, cell, proof, {{"x", "y", 0, 4, {{"h", Rational(1, 2)}}, "h = 1/2"}});
+}
+
+Outcome check(const ClaimContext& ctx) {
+  return atlas_outcome(ctx, proofs::atlas_cell(proofs::Homotopy::polar, proofs::Notion::norm), proof(),
+                       {{"x", "y", 0, 4, {{"h", Rational(1, 2)}}, "h = 1/2"}});
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
-#include "experiments/proofs/goodness_levels.hpp"
+#include "experiments/proofs/goodness_formulas.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
@@ -23,22 +23,25 @@ const ClaimDeclaration claim{{
 //   Two quantifier-free sentences in x, y.
 // Sizes: the sentences are the same at every size; random points 200 (quick) / 2000 (full).
 
-Outcome check(const ClaimContext& ctx) {
+AtlasProof proof() {
   using logic::Polynomial;
   const proofs::AtlasCell& cell = proofs::atlas_cell(proofs::Homotopy::svd, proofs::Notion::area);
   const proofs::PolyMat2 D{{{Polynomial::variable("x"), Polynomial(0)}, {Polynomial(0), Polynomial::variable("y")}}};
-  const AtlasProof proof{
+  return AtlasProof{
       .scope = cell.domain_words,
       .method =
           "Def 2.2.1 for det((1-t)I + tD) (the rotations have determinant 1, Lemma L5) at level E: monotone iff "
           "the derivative keeps one sign on [0, 1] (Lemma L1), read at t = 0 and 1 because it is affine, with "
           "positivity from det > 0 at t = 1 (Lemma L2)",
-      .sentences = {cond_not_prop(cell, "E", proofs::area_level_E(D)),
-                    prop_not_cond(cell, "E", proofs::area_level_E(D))},
+      .sentences = condition_sentences(cell, "E", proofs::area_property(D, "E")),
       .z3_only = {},
       .identities = {},
   };
-  return atlas_outcome(ctx, cell, proof, {{"x", "y", 0, 4, {}, "the (x, y) plane"}});
+}
+
+Outcome check(const ClaimContext& ctx) {
+  return atlas_outcome(ctx, proofs::atlas_cell(proofs::Homotopy::svd, proofs::Notion::area), proof(),
+                       {{"x", "y", 0, 4, {}, "the (x, y) plane"}});
 }
 
 }  // namespace

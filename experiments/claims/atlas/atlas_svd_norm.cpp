@@ -1,5 +1,7 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
+#include "experiments/proofs/condition_sentences.hpp"
+#include "experiments/proofs/goodness_formulas.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
@@ -17,7 +19,7 @@ const ClaimDeclaration claim{{
 }};
 
 // Reading: Def 2.2.2 for ‖A_s(t)v‖; R_{tα} is orthogonal (Lemma L5) but R_{tβ} on the right is not removable.
-// Method: Lemma L9 (analytic, proved by hand in the research): with G(t) = 4(x−1)(y−1)(1 + t(x−1))(1 + t(y−1))
+// Method: Lemma L9 (by hand, reports/proofs/LEMMAS.md): with G(t) = 4(x−1)(y−1)(1 + t(x−1))(1 + t(y−1))
 //   − β²t²(x−y)²(2 + t(x+y−2))², good for norm ⇔ G(t) ≥ 0 for all t ∈ [0, 1]; the condition is G(1) ≥ 0.
 //   Property ⇒ condition is the instance t = 1 (one sentence). Condition ⇒ property (Lemma L12, worst time
 //   t = 1) in σ = x + y − 2, π = (x−1)(y−1), B = β² (an identity turns G into these): Z3 decides it directly
@@ -30,19 +32,16 @@ const ClaimDeclaration claim{{
 
 using logic::Formula;
 using logic::Polynomial;
+using proofs::on_unit_interval;
+using proofs::sentence;
 
-Formula on_unit_interval(const Polynomial& t) { return logic::greater_equal(t, 0) && logic::less_equal(t, 1); }
-
-Outcome check(const ClaimContext& ctx) {
+AtlasProof proof() {
   const proofs::AtlasCell& cell = proofs::atlas_cell(proofs::Homotopy::svd, proofs::Notion::norm);
   const Polynomial x = Polynomial::variable("x"), y = Polynomial::variable("y"), beta = Polynomial::variable("beta"),
                    t = Polynomial::variable("t"), one(1), two(2), four(4);
   const Polynomial B = Polynomial::variable("B"), pi = Polynomial::variable("pi"), sg = Polynomial::variable("sg");
   // L9's G(t) in x, y, β, and in the symmetric coordinates σ, π, B.
-  const auto G = [&](const Polynomial& tt) {
-    return four * (x - one) * (y - one) * (one + tt * (x - one)) * (one + tt * (y - one)) -
-           beta * beta * tt * tt * pow(x - y, 2) * pow(two + tt * (x + y - two), 2);
-  };
+  const auto G = [&](const Polynomial& tt) { return proofs::svd_norm_G(x, y, beta, tt); };
   const auto Gs = [&](const Polynomial& tt, const Polynomial& b, const Polynomial& p) {
     return four * p * (one + tt * sg + tt * tt * p) - b * tt * tt * (sg * sg - four * p) * pow(two + tt * sg, 2);
   };
@@ -62,14 +61,12 @@ Outcome check(const ClaimContext& ctx) {
                         .substitute("pi", (x - one) * (y - one))
                         .substitute("B", beta * beta);
 
-  const auto sentence = [](std::string name, std::string meaning, std::vector<std::string> vars, Formula f) {
-    return proofs::Sentence{std::move(name), std::move(meaning), logic::exists(std::move(vars), std::move(f)), {}};
-  };
-  const AtlasProof proof{
+  return AtlasProof{
       .scope = cell.domain_words,
       .method =
-          "Lemma L9 (by hand): good for norm iff G(t) = 4(x-1)(y-1)(1+t(x-1))(1+t(y-1)) - beta^2 t^2 (x-y)^2 "
-          "(2+t(x+y-2))^2 >= 0 for all t in [0, 1]; the condition is G(1) >= 0 (identity). Property => condition: "
+          "Lemma L9 (by hand, reports/proofs/LEMMAS.md): good for norm iff G(t) = 4(x-1)(y-1)(1+t(x-1))(1+t(y-1)) - "
+          "beta^2 t^2 (x-y)^2 (2+t(x+y-2))^2 >= 0 for all t in [0, 1]; the condition is G(1) >= 0 (identity). Property "
+          "=> condition: "
           "the instance t = 1 (prop-not-cond.inst). Condition => property (Lemma L12, worst time t = 1), in "
           "sg = x+y-2, pi = (x-1)(y-1), B = beta^2 (identity): decided directly by Z3 (cond-not-prop.sym; QEPCAD "
           "exhausts its prime list there), and by both deciders through L12's chain: G is affine in B with slope "
@@ -106,10 +103,8 @@ Outcome check(const ClaimContext& ctx) {
                                  logic::less(Gs(t, B, Polynomial(exact::Rational(1, 4)) * sg * sg), 0))},
       .z3_only = {"cond-not-prop.sym"},
       .identities =
-          {{"condition-is-G(1): 4xy(x-1)(y-1) - beta^2(x-y)^2(x+y)^2 = G(1)", four * x * y * (x - one) * (y - one) -
-                                                                                  beta * beta * pow(x - y, 2) *
-                                                                                      pow(x + y, 2) -
-                                                                                  G(one)},
+          {{"condition-is-G(1): 4xy(x-1)(y-1) - beta^2(x-y)^2(x+y)^2 = G(1)",
+            four * x * y * (x - one) * (y - one) - beta * beta * pow(x - y, 2) * pow(x + y, 2) - G(one)},
            {"svd-coordinates: G(t) in x, y, beta = G(t) in sg, pi, B", G(t) - svd_coordinates},
            {"L12.C: (1-t)C = (1+t sg+t^2 pi)(2+sg)^2 - t^2(2+t sg)^2(1+sg+pi)",
             (one - t) * C -
@@ -117,11 +112,14 @@ Outcome check(const ClaimContext& ctx) {
            {"L12.G-at-B*: D G(t)|B=N/D = 4 pi (1-t) C (sg^2 - 4 pi), N = 4 pi (1+sg+pi), D = (sg^2-4pi)(2+sg)^2",
             G_at_Bstar_times_D - four * pi * (one - t) * C * (sg * sg - four * pi)}},
   };
+}
+
+Outcome check(const ClaimContext& ctx) {
   std::vector<Slice> slices;
   for (const auto& [b, label] : std::vector<std::pair<Rational, std::string>>{
            {0, "beta = 0"}, {Rational(1, 2), "beta = 1/2"}, {1, "beta = 1"}, {2, "beta = 2"}})
     slices.push_back({"x", "y", 0, 3, {{"beta", b}}, label});
-  return atlas_outcome(ctx, cell, proof, slices);
+  return atlas_outcome(ctx, proofs::atlas_cell(proofs::Homotopy::svd, proofs::Notion::norm), proof(), slices);
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 
+#include "experiments/claims/proof_strength.hpp"
+#include "experiments/proofs/condition_sentences.hpp"
 #include "experiments/support/random.hpp"
 #include "plots/region_map.hpp"
 
@@ -93,21 +95,14 @@ proofs::Sentence atlas_sentence(const proofs::AtlasCell& cell, const std::string
                                 const Formula& set, const std::vector<std::string>& extra) {
   std::vector<std::string> variables = cell.variables;
   variables.insert(variables.end(), extra.begin(), extra.end());
-  return {name, meaning, logic::exists(variables, cell.domain && set), {}};
+  return proofs::sentence(name, meaning, variables, cell.domain && set);
 }
 
-proofs::Sentence cond_not_prop(const proofs::AtlasCell& cell, const std::string& level, const Formula& property,
-                               const std::vector<std::string>& extra) {
-  return atlas_sentence(cell, "cond-not-prop." + level,
-                        "a point of the domain where the condition holds and the property (level " + level + ") fails",
-                        cell.condition_formula() && !property, extra);
-}
-
-proofs::Sentence prop_not_cond(const proofs::AtlasCell& cell, const std::string& level, const Formula& property,
-                               const std::vector<std::string>& extra) {
-  return atlas_sentence(cell, "prop-not-cond." + level,
-                        "a point of the domain where the property (level " + level + ") holds and the condition fails",
-                        !cell.condition_formula() && property, extra);
+std::vector<proofs::Sentence> condition_sentences(const proofs::AtlasCell& cell, const std::string& level,
+                                                  const Formula& property) {
+  const Formula condition = cell.condition_formula();
+  return {proofs::cond_not_prop("", level, cell.variables, cell.domain, condition, property),
+          proofs::prop_not_cond("", level, cell.variables, cell.domain, condition, property)};
 }
 
 Outcome atlas_outcome(const ClaimContext& ctx, const proofs::AtlasCell& cell, const AtlasProof& proof,
@@ -116,7 +111,7 @@ Outcome atlas_outcome(const ClaimContext& ctx, const proofs::AtlasCell& cell, co
   outcome.condition = cell.condition;
 
   std::vector<ProofSentence> records;
-  bool all_empty = true, both_decided = true;
+  bool all_empty = true;
   std::optional<std::pair<std::string, proofs::Witness>> non_empty;
   for (const proofs::Sentence& sentence : proof.sentences) {
     const bool z3_alone = std::find(proof.z3_only.begin(), proof.z3_only.end(), sentence.name) != proof.z3_only.end();
@@ -126,21 +121,26 @@ Outcome atlas_outcome(const ClaimContext& ctx, const proofs::AtlasCell& cell, co
     records.push_back(proofs::to_proof_sentence(sentence, d));  // throws when the deciders disagree
     if (d.result == SetResult::non_empty && !non_empty && d.witness) non_empty.emplace(sentence.name, *d.witness);
     all_empty = all_empty && d.result == SetResult::empty;
-    const bool qepcad_empty = d.runs[0].answer.result == SetResult::empty;
-    const bool z3_empty = d.runs[1].answer.result == SetResult::empty;
-    both_decided = both_decided && z3_empty && (qepcad_empty || z3_alone);
   }
   std::vector<std::string> failed_identities;
   for (const auto& [name, difference] : proof.identities)
     if (!difference.is_zero()) failed_identities.push_back(name);
 
   outcome.proof = proofs::make_proof(proof.scope, proof.method, records);
-  if (!proof.z3_only.empty() && both_decided) outcome.proof->checked_by = {"qepcad", "z3"};
+  outcome.proof->cites = proof.cites;
+  const std::optional<Strength> strength = proof_strength(*outcome.proof);
+  std::string checkers;
+  for (const std::string& c : outcome.proof->checked_by) checkers += (checkers.empty() ? "" : ", ") + c;
 
   const SampleComparison sample = compare_with_suite(cell, ctx.seed, ctx.pick(200, 2000));
+  // The method says what ran: the second line only where the suite has an exact decider for the cell.
   outcome.evidence.method =
-      "first-order sentences decided for all reals by QEPCAD B and Z3 (the proof); second line: the condition "
-      "against the suite's exact decider (theory/local/goodness.hpp) at random rational points";
+      "first-order sentences decided for all reals (the proof; each decider's answer read from its stored "
+      "transcript)" +
+      (sample.points ? "; second line: the condition against the suite's exact decider (theory/local/goodness.hpp) "
+                       "at " +
+                           std::to_string(sample.points) + " random rational points"
+                     : std::string());
   outcome.evidence.sample_size = sample.points;
   outcome.evidence.seed = ctx.seed;
   outcome.evidence.details["condition_in_words"] = cell.condition_words;
@@ -170,12 +170,12 @@ Outcome atlas_outcome(const ClaimContext& ctx, const proofs::AtlasCell& cell, co
     outcome.counterexample["exact"] = non_empty->second.exact;
     return outcome;
   }
-  if (all_empty && both_decided && failed_identities.empty()) {
+  if (all_empty && strength && failed_identities.empty()) {
     outcome.verdict = Verdict::confirmed;
-    outcome.strength = Strength::proved;
+    outcome.strength = *strength;
     outcome.summary =
         "proved for all reals: good for " + std::string(proofs::to_string(cell.notion)) + " exactly when " +
-        cell.condition_words + " (" + std::to_string(records.size()) + " sentences empty by QEPCAD B and Z3" +
+        cell.condition_words + " (" + std::to_string(records.size()) + " sentences empty; checked by " + checkers +
         (sample.points
              ? "; the suite's exact decider agrees at " + std::to_string(sample.points) + " random rational points"
              : "") +

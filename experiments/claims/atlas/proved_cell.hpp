@@ -25,13 +25,15 @@ struct Slice {
 
 struct AtlasProof {
   std::string scope;   ///< the domain, in words
-  std::string method;  ///< encoding levels and lemmas (research FINDINGS §2)
+  std::string method;  ///< encoding levels and lemmas (reports/proofs/LEMMAS.md)
   std::vector<proofs::Sentence> sentences;
   /// A sentence of these names may be decided by Z3 alone: QEPCAD decides the same direction through the
   /// lemma sentences the method names instead (svd norm, Lemma L12).
   std::vector<std::string> z3_only;
   /// Identities the method rests on, checked by exact polynomial arithmetic: name → (lhs − rhs) which must be 0.
   std::vector<std::pair<std::string, logic::Polynomial>> identities;
+  /// An external published theorem the method uses as a step (experiments/proofs/citations.hpp); empty: none.
+  std::string cites{};
 };
 
 /// Decides the proof's sentences and assembles the outcome: confirmed and proved when every sentence is empty
@@ -44,11 +46,9 @@ Outcome atlas_outcome(const ClaimContext& ctx, const proofs::AtlasCell& cell, co
 /// ∃ cell variables (and `extra`): domain ∧ `set`.
 proofs::Sentence atlas_sentence(const proofs::AtlasCell& cell, const std::string& name, const std::string& meaning,
                                 const logic::Formula& set, const std::vector<std::string>& extra = {});
-/// ∃ cell variables (and `extra`): domain ∧ condition ∧ ¬property, named "cond-not-prop.<level>".
-proofs::Sentence cond_not_prop(const proofs::AtlasCell& cell, const std::string& level, const logic::Formula& property,
-                               const std::vector<std::string>& extra = {});
-/// ∃ cell variables (and `extra`): domain ∧ ¬condition ∧ property, named "prop-not-cond.<level>".
-proofs::Sentence prop_not_cond(const proofs::AtlasCell& cell, const std::string& level, const logic::Formula& property,
-                               const std::vector<std::string>& extra = {});
+/// The cell's condition against `property` (at encoding `level`): "cond-not-prop.<level>" and
+/// "prop-not-cond.<level>" over the cell's variables and domain (experiments/proofs/condition_sentences.hpp).
+std::vector<proofs::Sentence> condition_sentences(const proofs::AtlasCell& cell, const std::string& level,
+                                                  const logic::Formula& property);
 
 }  // namespace affinterp::claims::atlas

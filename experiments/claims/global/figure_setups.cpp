@@ -7,6 +7,7 @@ namespace affinterp::claims::global_figures {
 global::InterpolationOptions options_for(global::Energy energy, global::Constraints constraints) {
   global::InterpolationOptions options;
   options.energy = energy;
+  options.area_weighted = false;  // the plain sum of Kaji §4, as in Figs. 2–6
   options.constraints = std::move(constraints);
   return options;
 }

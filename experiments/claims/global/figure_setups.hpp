@@ -15,7 +15,7 @@ constexpr double extreme_shrink = 0.1;
 /// Constraint weight c of the vertex loci and pinned vertices: strong against the sum of local errors.
 constexpr double constraint_weight = 1000;
 
-/// Default options with the given energy and constraints.
+/// Default options with the given energy and constraints, the local errors summed without weights (§4).
 global::InterpolationOptions options_for(global::Energy energy, global::Constraints constraints);
 
 /// Fig 2 / Fig 4's input: the man (rest → "wave") with the loci of the head's top and the lowest foot

@@ -1,5 +1,7 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/confirmed_by_proof.hpp"
 #include "experiments/claims/global/exact_global.hpp"
+#include "experiments/claims/global/frame_identities.hpp"
 #include "experiments/claims/values.hpp"
 
 namespace affinterp::claims {
@@ -21,6 +23,8 @@ const ClaimDeclaration claim{{
 // Method: Σ E^F written as vᵀGv + vᵀu + c (Kaji Appendix) exactly on random connected rational meshes, at t = 1 and
 //   at the linear homotopy's A_i(½) = (I + A_i)/2: G must kill exactly the translations (Gτ = 0, uᵀτ = 0, rank
 //   2n − 2) and one pinned vertex must make it nonsingular.
+//   Proof for every connected mesh (proof()): identities of one triangle that sum over any mesh
+//   (frame_identities.hpp), with the connectivity step argued.
 // Sizes: quick 4 meshes; full 30; strips of 1–3 × 1–2 jittered unit squares.
 
 using global::Energy;
@@ -28,6 +32,12 @@ using global_exact::Mat2Q;
 using global_exact::MatQ;
 using global_exact::Rational;
 using global_exact::VecQ;
+
+Proof proof(const ClaimContext& ctx) {
+  return proofs::identity_proof("every mesh in one connected piece, every A_i (hence every t)",
+                                frame_identities::method(),
+                                proofs::prove_identities(frame_identities::identities(), ctx.proof_files()));
+}
 
 Outcome check(const ClaimContext& ctx) {
   Outcome out;
@@ -73,6 +83,8 @@ Outcome check(const ClaimContext& ctx) {
   out.evidence.details = {
       {"meshes", "strips of 1–3 × 1–2 jittered unit squares, rational targets"},
       {"scope", "for a mesh in one connected piece; each further piece adds two dimensions of kernel"}};
+  out.proof = proof(ctx);
+  weigh_confirmation_against_proof(out, "every mesh in one connected piece");
   return out;
 }
 

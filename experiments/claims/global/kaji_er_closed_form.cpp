@@ -1,6 +1,7 @@
 #include "experiments/claims/claim.hpp"
 #include "experiments/claims/global/exact_global.hpp"
 #include "experiments/claims/global/symbolic_er.hpp"
+#include "experiments/claims/proof_strength.hpp"
 #include "experiments/claims/values.hpp"
 #include "experiments/proofs/identity.hpp"
 #include "theory/local/rotation.hpp"
@@ -120,7 +121,7 @@ Outcome check(const ClaimContext& ctx) {
       {"other_order_example", other_order_example}};
   out.proof = proof(ctx);
   if (proofs::proves(*out.proof)) {
-    out.strength = Strength::proved;
+    out.strength = *proof_strength(*out.proof);
     out.summary += "; proved for all A ≠ 0, B by two identities (GiNaC and an exact degree grid)";
   } else {
     out.verdict = Verdict::inconclusive;

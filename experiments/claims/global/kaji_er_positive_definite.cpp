@@ -152,7 +152,7 @@ Outcome check(const ClaimContext& ctx) {
   for (std::size_t i = 0; i < expected.size(); ++i)
     if (const std::string& r = out.proof->sentences[i].result; r != expected[i] && r != "unknown")
       throw std::runtime_error("the proof's " + out.proof->sentences[i].name + " is " + r + ", not " + expected[i]);
-  if (proofs::decided_twice(*out.proof)) out.summary += "; proved for all A ≠ 0 (identities and sentences)";
+  if (out.proof->decided_by_two()) out.summary += "; proved for all A ≠ 0 (identities and sentences)";
   return out;
 }
 

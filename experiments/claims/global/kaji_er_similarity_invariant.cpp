@@ -1,6 +1,7 @@
 #include "experiments/claims/claim.hpp"
 #include "experiments/claims/global/exact_global.hpp"
 #include "experiments/claims/global/symbolic_er.hpp"
+#include "experiments/claims/proof_strength.hpp"
 #include "experiments/claims/values.hpp"
 #include "experiments/proofs/identity.hpp"
 
@@ -74,7 +75,7 @@ Outcome check(const ClaimContext& ctx) {
                            "B) is scaled, not invariant"}};
   out.proof = proof(ctx);
   if (proofs::proves(*out.proof)) {
-    out.strength = Strength::proved;
+    out.strength = *proof_strength(*out.proof);
     out.summary += "; proved for all A ≠ 0, B, sR_δ ≠ 0 by two identities (GiNaC and an exact degree grid)";
   } else {
     out.verdict = Verdict::inconclusive;

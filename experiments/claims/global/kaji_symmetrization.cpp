@@ -43,6 +43,7 @@ double reversal_gap(const shapes::MeshPairShapes& pair, Energy energy, global::L
                      b = global_figures::extreme_vertex(P, {-1, -0.01});
   global::InterpolationOptions options;
   options.energy = energy, options.homotopy = homotopy, options.symmetric = symmetric;
+  options.area_weighted = false;                      // the plain sum of Kaji §4
   options.constraints.pinned = {{a, 1.0}, {b, 1.0}};  // straight paths: the reverse problem's are the same lines
   const global::Interpolation forward(P, pair.target, options), backward(pair.target, P, options);
   const double diameter = (P.vertices.rowwise().maxCoeff() - P.vertices.rowwise().minCoeff()).norm();
@@ -102,6 +103,7 @@ Outcome check(const ClaimContext& ctx) {
     const shapes::MeshPairShapes man = shapes::make_shape("man-wave");
     global::InterpolationOptions options;
     options.symmetric = true;
+    options.area_weighted = false;
     options.constraints.pinned = {{global_figures::extreme_vertex(man.source, {1, 0.01}), 1.0},
                                   {global_figures::extreme_vertex(man.source, {-1, -0.01}), 1.0}};
     const auto forward = global_figures::animate("P → Q, symmetrised E^R", man.source,

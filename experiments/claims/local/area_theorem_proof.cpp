@@ -1,13 +1,14 @@
 #include "experiments/claims/local/area_theorem_proof.hpp"
 
 #include "experiments/claims/local/area_witness.hpp"
+#include "experiments/claims/local/printed_conditions.hpp"
 #include "experiments/claims/values.hpp"
 #include "theory/local/goodness.hpp"
 #include "theory/local/thesis_conditions.hpp"
 
 namespace affinterp::claims::local {
 
-ProofPlan area_theorem_plan(const ClaimContext& ctx, const AreaParameters& p) {
+ProofPlan area_theorem_plan(const AreaParameters& p) {
   const Polynomial tr = trace(p.B), dt = det(p.B), t = var("t");
   const Formula printed = thm_2_2_1_formula(tr, dt), corrected = corrected_area_formula(tr, dt);
   ProofPlan plan;
@@ -18,14 +19,11 @@ ProofPlan area_theorem_plan(const ClaimContext& ctx, const AreaParameters& p) {
       ". Level E: positive and monotone on [0, 1] iff det B > 0 and the derivative's values tr B - 2 (t = 0) and "
       "2 det B - tr B (t = 1) are not of opposite strict signs (Lemmas L1, L2; L2 decided as its own sentences for "
       "every quadratic 1 + c1 t + c2 t^2). Printed condition and its correction each against the property: "
-      "cond-not-prop and prop-not-cond empty = equivalent." +
-      std::string(ctx.size == Size::full
-                      ? " Second formulations: level D (derivative, Lemma L1, decided as its own sentence) and level L "
-                        "(Def 2.2.1 as written, for all 0 <= s <= t <= 1)."
-                      : "");
-  plan.sentences = {lemma_L2(), lemma_L2_area()};
-  std::vector<std::string> levels{"E"};
-  if (ctx.size == Size::full) levels.insert(levels.end(), {"D", "L"}), plan.sentences.push_back(lemma_L1());
+      "cond-not-prop and prop-not-cond empty = equivalent. Second formulations: level D (derivative, Lemma L1, decided "
+      "as its own sentence) and level L "
+      "(Def 2.2.1 as written, for all 0 <= s <= t <= 1).";
+  plan.sentences = {lemma_L2(), lemma_L2_area(), lemma_L1()};
+  const std::vector<std::string> levels{"E", "D", "L"};
   for (const std::string& level : levels) {
     const Formula good = area_property(p.B, level);
     for (const auto& [base, condition] : {std::pair{"printed.", printed}, std::pair{"corrected.", corrected}}) {
@@ -40,7 +38,7 @@ ProofPlan area_theorem_plan(const ClaimContext& ctx, const AreaParameters& p) {
 }
 
 std::optional<Verdict> area_proof_verdict(const ProofRun& run) {
-  if (!run.decided_by_two()) return std::nullopt;
+  if (!run.decided()) return std::nullopt;
   const auto empty = [&](const std::string& name) { return run.result(name) == "empty"; };
   if (empty("printed.cond-not-prop.E") && empty("printed.prop-not-cond.E")) return Verdict::confirmed;
   if (empty("corrected.cond-not-prop.E") && empty("corrected.prop-not-cond.E")) return Verdict::corrected;

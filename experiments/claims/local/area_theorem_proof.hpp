@@ -23,9 +23,9 @@ struct AreaParameters {
   std::string rotations;  ///< how the homotopy's rotations drop out of det A(t), or empty
 };
 
-/// The sentences: Lemma L2 (both forms), then "printed." and "corrected." pairs at level E; under the full size
-/// also levels D and L and Lemma L1. Identity: det((1−t)I + tB) = 1 + (tr B − 2)t + (1 − tr B + det B)t².
-ProofPlan area_theorem_plan(const ClaimContext& ctx, const AreaParameters& p);
+/// The sentences: Lemma L2 (both forms) and L1, then "printed." and "corrected." pairs at levels E, D and L. Identity:
+/// det((1−t)I + tB) = 1 + (tr B − 2)t + (1 − tr B + det B)t².
+ProofPlan area_theorem_plan(const AreaParameters& p);
 
 /// The verdict the proof reaches (confirmed, corrected or refuted from the printed and corrected pairs at level
 /// E), or nullopt when a sentence was not decided by both deciders.

@@ -14,8 +14,8 @@ using exact::Rational;
 
 inline nlohmann::json area_witness(const Mat2<Rational>& B) {
   const auto det = affinterp::local::blend_determinant(B);
-  std::vector<Rational> times{0, 1};
-  if (const auto t = affinterp::local::interior_critical_point(det)) times.insert(times.begin() + 1, *t);
+  const auto t_star = affinterp::local::interior_critical_point(det);
+  const std::vector<Rational> times = t_star ? std::vector<Rational>{0, *t_star, 1} : std::vector<Rational>{0, 1};
   nlohmann::json t_json = nlohmann::json::array(), det_json = nlohmann::json::array();
   for (const Rational& t : times) t_json.push_back(exact::to_string(t)), det_json.push_back(exact::to_string(det(t)));
   const bool monotone = affinterp::local::monotone_on_unit_interval(det);

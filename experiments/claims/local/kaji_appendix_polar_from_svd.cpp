@@ -1,5 +1,9 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/confirmed_by_proof.hpp"
+#include "experiments/claims/local/rotation_lemma.hpp"
 #include "experiments/claims/local/simple_values.hpp"
+#include "experiments/proofs/ginac_scalar.hpp"
+#include "experiments/proofs/identity.hpp"
 #include "theory/local/local.hpp"
 
 #include <algorithm>
@@ -24,6 +28,12 @@ const ClaimDeclaration claim{{
 // Method: A = R_α D R_β with rational rotations, so R_{α+β} = R_α R_β and S = R_βᵀ D R_β are exact: A = R_{α+β} S,
 //   S symmetric positive definite and S^n = R_βᵀ D^n R_β (n = 2, 3) are identities over ℚ. On a subset, in Real50,
 //   the direct polar decomposition gives the same R_θ and S, and (R_βᵀ D^{2/3} R_β)³ = S².
+//   Proof for every α, β, x, y (proof()): theory/local's polar_from_svd and spd_power over symbols, the rotations
+//   made rational by the rotation lemma (addition formulas, half-angle parametrisation): A = R_{α+β} S, S symmetric
+//   with trace x + y and determinant xy (so positive definite when x ≥ y > 0), S R_{−β} = R_{−β} D with R_{−β}
+//   orthogonal, and spd_power at t = 1, 2 is S, S². Not symbolic: that svd() and polar_decomposition() (atan2,
+//   hypot) find these factors, and S^t for non-integer t, which is the spectral power R_{−β} D^t R_{−β}ᵀ by
+//   definition once S R_{−β} = R_{−β} D; the Real50 part covers those on the grid.
 // Sizes: quick (x, y) step 1/2; full step 1/8; rotations u ∈ [−2, 2] step 1/2 at both.
 
 using affinterp::local::det2;
@@ -32,6 +42,41 @@ using affinterp::local::Svd;
 using exact::Real50;
 
 Mat2<Rational> product(const Mat2<Rational>& a, const Mat2<Rational>& b) { return a.lazyProduct(b); }
+
+/// The identities of the proof, over symbols α, β, x, y: theory/local's polar factors of A = R_α D R_β.
+Proof proof(const ClaimContext& ctx) {
+  using X = GiNaC::ex;
+  const GiNaC::symbol alpha("alpha"), beta("beta"), x("x"), y("y");
+  const Svd<X> A_svd{alpha, x, y, beta}, S_eigen{-X(beta), x, y, beta};  // A = R_α D R_β, S = R_{−β} D R_β
+  const affinterp::local::Polar<X> polar = affinterp::local::polar_from_svd(A_svd);
+  const Mat2<X> R_theta = affinterp::local::rotation<X>(polar.theta),
+                R_minus_beta = affinterp::local::rotation<X>(-beta), R_beta = affinterp::local::rotation<X>(beta),
+                D = A_svd.D(), S = polar.S;
+  RotationLemma lemma;
+  const auto rational = [&lemma](const Mat2<X>& M) { return lemma(proofs::to_ginac(M)); };
+  const std::vector<proofs::Identity> identities = {
+      {"polar-product", "R_θ S = R_α D R_β with θ = α + β, S = R_{−β} D R_β", rational(R_theta.lazyProduct(S)),
+       rational(A_svd.matrix())},
+      {"symmetric", "S₁₂ = S₂₁", lemma(S(0, 1)), lemma(S(1, 0))},
+      {"trace", "tr S = x + y", lemma(S.trace()), x + y},
+      {"determinant", "det S = x y", lemma(det2(S)), x * y},
+      {"orthogonal", "R_{−β} R_β = I", rational(R_minus_beta.lazyProduct(R_beta)),
+       proofs::to_ginac(affinterp::local::identity2<X>())},
+      {"eigenvectors", "S R_{−β} = R_{−β} D", rational(S.lazyProduct(R_minus_beta)),
+       rational(R_minus_beta.lazyProduct(D))},
+      {"power-one", "S^t at t = 1 is S", rational(affinterp::local::spd_power(S_eigen, X(1))), rational(S)},
+      {"power-two", "S^t at t = 2 is S S", rational(affinterp::local::spd_power(S_eigen, X(2))),
+       rational(S.lazyProduct(S))},
+  };
+  return proofs::identity_proof(
+      "every A = R_α D R_β, D = diag(x, y), x ≥ y > 0, α and β real",
+      "identities over symbols from theory/local's polar_from_svd and spd_power, cos and sin of the angles by the "
+      "addition formulas and the half-angle parametrisation (a polynomial identity in cos, sin on the circle minus "
+      "one point holds on the circle); a symmetric S with positive trace and determinant is positive definite; S^t "
+      "for real t is R_{−β} D^t R_{−β}ᵀ by the spectral definition once S R_{−β} = R_{−β} D, R_{−β} orthogonal. Not "
+      "proved here: that svd() and polar_decomposition() (atan2, hypot) compute these factors (Real50 grid only)",
+      proofs::prove_identities(identities, ctx.proof_files()));
+}
 
 Outcome check(const ClaimContext& ctx) {
   const Rational step = ctx.pick(Rational(1) / 2, Rational(1) / 8);
@@ -91,6 +136,8 @@ Outcome check(const ClaimContext& ctx) {
                   std::to_string(cases) +
                   " cases (exact; Real50 for the fractional power and the direct polar decomposition)"
             : "the Appendix's formulas fail on some case";
+  outcome.proof = proof(ctx);
+  if (holds) weigh_confirmation_against_proof(outcome, "every A = R_α D R_β with x ≥ y > 0");
   return outcome;
 }
 

@@ -1,4 +1,7 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/confirmed_by_proof.hpp"
+#include "experiments/proofs/ginac_scalar.hpp"
+#include "experiments/proofs/identity.hpp"
 #include "experiments/support/random.hpp"
 #include "theory/exact/rational.hpp"
 #include "theory/local/local.hpp"
@@ -24,9 +27,35 @@ const ClaimDeclaration claim{{
 //   indices of a; notation only, recorded in the evidence.
 // Method: random triangle pairs with small rational coordinates; Â = Q̂ P̂⁻¹ in exact rational arithmetic must
 //   send each p_k to q_k and have last row (0, 0, 1). Collinear sources (no inverse) are skipped and counted.
+//   Proof for every non-degenerate source (proof()): the same inverse3 and affine_map over coordinate symbols,
+//   P̂⁻¹P̂ = I (so Â P̂ = Q̂ P̂⁻¹ P̂ = Q̂: Â p_k = q_k) and Â's last row (0, 0, 1): rational identities with
+//   denominator det P̂, nonzero exactly when the source is not collinear.
 // Sizes: quick 200 pairs; full 5000.
 
 using exact::Rational;
+
+/// P̂⁻¹P̂ = I and Â's last row (0, 0, 1), from theory/local's inverse3 and affine_map over symbols p_ik, q_ik; with
+/// Â = Q̂ P̂⁻¹ (affine_map) the first gives Â P̂ = Q̂, i.e. Â p_k = q_k. (Â P̂ = Q̂ directly over all twelve symbols
+/// exceeds the exact grid's size: q cancels only by associativity.)
+Proof proof(const ClaimContext& ctx) {
+  using X = GiNaC::ex;
+  const affinterp::local::Triangle<X> p = proofs::symbolic_matrix<2, 3>("p"), q = proofs::symbolic_matrix<2, 3>("q");
+  const affinterp::local::Mat3<X> P_hat = affinterp::local::homogeneous(p);
+  const auto map = affinterp::local::affine_map(p, q);  // Kaji eq. (1) over symbols
+  Eigen::Matrix<X, 1, 3> last_row;
+  last_row << X(0), X(0), X(1);
+  const std::vector<proofs::Identity> identities = {
+      {"inverse", "P̂⁻¹ P̂ = I (inverse3 by the adjugate), so Â P̂ = Q̂ P̂⁻¹ P̂ = Q̂: Â p_k = q_k",
+       proofs::to_ginac<3, 3>(affinterp::local::inverse3(P_hat).lazyProduct(P_hat)),
+       proofs::to_ginac<3, 3>(affinterp::local::Mat3<X>::Identity())},
+      {"last-row", "Â's last row is (0, 0, 1)", proofs::to_ginac<1, 3>(map.A_hat.row(2)), proofs::to_ginac(last_row)},
+  };
+  return proofs::identity_proof(
+      "every pair of triangles p, q with p not collinear (det P̂ ≠ 0)",
+      "rational identities in the vertex coordinates from theory/local's inverse3 and affine_map (eq. (1), Â = "
+      "Q̂ P̂⁻¹, inverse by the adjugate); Â P̂ = Q̂ by associativity",
+      proofs::prove_identities(identities, ctx.proof_files()));
+}
 
 Outcome check(const ClaimContext& ctx) {
   Rng rng(ctx.seed);
@@ -66,6 +95,9 @@ Outcome check(const ClaimContext& ctx) {
       failures == 0 ? "on " + std::to_string(tried) +
                           " random rational triangle pairs, eq. (1) maps p_k to q_k exactly and has last row (0, 0, 1)"
                     : std::to_string(failures) + " triangle pairs where eq. (1) does not map the vertices";
+  outcome.proof = proof(ctx);
+  if (outcome.verdict == Verdict::confirmed)
+    weigh_confirmation_against_proof(outcome, "every non-collinear source triangle and every target");
   return outcome;
 }
 

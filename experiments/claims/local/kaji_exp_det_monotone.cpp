@@ -1,6 +1,7 @@
 #include "experiments/claims/claim.hpp"
 #include "experiments/claims/local/local_proof.hpp"
 #include "experiments/claims/local/random_gl_plus.hpp"
+#include "experiments/proofs/citations.hpp"
 #include "theory/local/local.hpp"
 
 #include <algorithm>
@@ -61,7 +62,8 @@ ProofPlan proof_plan() {
                     "c > 0 and two times (E = c^t, E2 = c^s > 0) where L c^t takes both signs", {"c", "L", "E", "E2"},
                     logic::greater(c, 0) && logic::greater(E, 0) && logic::greater(E2, 0) && log_sign &&
                         logic::less(L * E, 0) && logic::greater(L * E2, 0))},
-          {}};
+          {},
+          std::string(proofs::citations::exponential)};
 }
 
 Outcome check(const ClaimContext& ctx) {

@@ -1,6 +1,7 @@
 #include "experiments/claims/claim.hpp"
 #include "experiments/claims/local/local_proof.hpp"
 #include "experiments/claims/local/random_gl_plus.hpp"
+#include "experiments/proofs/citations.hpp"
 #include "plots/local/figures.hpp"
 #include "theory/local/local.hpp"
 
@@ -46,7 +47,8 @@ ProofPlan proof_plan() {
                 logic::greater(x, 0) && logic::greater(y, 0) && logic::greater(det_S, 0) &&
                     logic::equal(l1 + l2, x + y) && logic::equal(l1 * l2, det_S) &&
                     (logic::less_equal(l1, 0) || logic::less_equal(l2, 0)))},
-      {}};
+      {},
+      std::string(proofs::citations::exponential)};
 }
 
 Outcome check(const ClaimContext& ctx) {

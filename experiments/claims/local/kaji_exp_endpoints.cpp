@@ -1,5 +1,9 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/confirmed_by_proof.hpp"
 #include "experiments/claims/local/random_gl_plus.hpp"
+#include "experiments/claims/local/rotation_lemma.hpp"
+#include "experiments/proofs/ginac_scalar.hpp"
+#include "experiments/proofs/identity.hpp"
 #include "theory/local/local.hpp"
 
 #include <algorithm>
@@ -22,11 +26,39 @@ const ClaimDeclaration claim{{
 //   for every k.
 // Method: A^E(t) = R_{tθ} S^t (Kaji eq. (3)) evaluated in Real50 at t = 0 and 1 on random A ∈ GL+(2), θ shifted
 //   by 2πk, |k| ≤ 2; the worst of |A^E(0) − I| and the relative |A^E(1) − A| must stay below 1e-40.
+//   Proof for every A = R_α D R_β and every θ (proof()): R_{tθ} S^t at t = 0 and 1 from theory/local's rotation and
+//   spd_power over symbols (the composition ExpLogHomotopy::operator() runs; ExpLogHomotopy itself cannot take
+//   symbols, its constructor calls svd(), i.e. atan2 and hypot), with the polar factors θ = α + β, S = R_{−β} D R_β
+//   of polar_from_svd and the rotation lemma; θ is a free symbol, so every representative θ + 2πk is covered.
 // Sizes: quick 100 matrices; full 2000.
 
 using affinterp::local::ExpLogHomotopy;
 
 Real50 relative_gap(const Mat2<Real50>& got, const Mat2<Real50>& want) { return (got - want).norm() / want.norm(); }
+
+/// A^E(0) = I and A^E(1) = A over symbols α, β, x, y (A = R_α D R_β) and any angle θ of R_θ = R_{α+β}.
+Proof proof(const ClaimContext& ctx) {
+  using X = GiNaC::ex;
+  using affinterp::local::rotation;
+  using affinterp::local::spd_power;
+  const GiNaC::symbol alpha("alpha"), beta("beta"), x("x"), y("y");
+  const affinterp::local::Svd<X> A_svd{alpha, x, y, beta}, S_eigen{-X(beta), x, y, beta};
+  const affinterp::local::Polar<X> polar = affinterp::local::polar_from_svd(A_svd);
+  // Kaji eq. (3) as ExpLogHomotopy::operator() composes it: A^E(t) = R_{tθ} S^t.
+  const auto A_E = [&](const X& t) { return Mat2<X>(rotation<X>(t * polar.theta).lazyProduct(spd_power(S_eigen, t))); };
+  RotationLemma lemma;
+  const auto rational = [&lemma](const Mat2<X>& M) { return lemma(proofs::to_ginac(M)); };
+  const std::vector<proofs::Identity> identities = {
+      {"start", "R_{0·θ} S^0 = I", rational(A_E(X(0))), proofs::to_ginac(affinterp::local::identity2<X>())},
+      {"end", "R_{1·θ} S^1 = R_α D R_β = A", rational(A_E(X(1))), rational(A_svd.matrix())},
+  };
+  return proofs::identity_proof(
+      "every A = R_α D R_β (x ≥ y > 0, α, β real) and every representative θ of its polar angle",
+      "identities over symbols from theory/local's rotation, spd_power and polar_from_svd, cos and sin by the "
+      "addition formulas and the half-angle parametrisation; R_{θ+2πk} = R_θ. Not proved here: that svd() and "
+      "polar_decomposition() (atan2, hypot), which ExpLogHomotopy calls, compute these factors (Real50 sample only)",
+      proofs::prove_identities(identities, ctx.proof_files()));
+}
 
 Outcome check(const ClaimContext& ctx) {
   Rng rng(ctx.seed);
@@ -55,6 +87,8 @@ Outcome check(const ClaimContext& ctx) {
   outcome.summary = holds ? "A^E(0) = I and A^E(1) = A on " + std::to_string(samples) +
                                 " random A (Real50, any representative of theta)"
                           : "A^E misses an endpoint";
+  outcome.proof = proof(ctx);
+  if (holds) weigh_confirmation_against_proof(outcome, "every A = R_α D R_β and every representative of θ");
   return outcome;
 }
 

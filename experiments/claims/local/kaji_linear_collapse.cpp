@@ -1,5 +1,8 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/confirmed_by_proof.hpp"
 #include "experiments/claims/values.hpp"
+#include "experiments/proofs/ginac_scalar.hpp"
+#include "experiments/proofs/identity.hpp"
 #include "theory/exact/rational.hpp"
 #include "theory/local/goodness.hpp"
 #include "theory/local/local.hpp"
@@ -22,6 +25,7 @@ const ClaimDeclaration claim{{
 
 // Reading: as printed; A = −I lies in GL+(2) (det A = 1), so the example is admissible.
 // Method: exact rational evaluation of A^L(1/2) and of the coefficients of det A^L(t) = det((1−t)I + tA).
+//   Proof (proof()): the same LinearHomotopy over symbols, A^L(1/2) = 0 and det A^L(t) = (1 − 2t)² for every t.
 // Sizes: one matrix at either size.
 
 using affinterp::local::blend_determinant;
@@ -30,7 +34,23 @@ using affinterp::local::Mat2;
 using affinterp::local::Quadratic;
 using exact::Rational;
 
-Outcome check(const ClaimContext&) {
+/// A^L(1/2) = 0 and det A^L(t) = (1 − 2t)² for A = −I, from theory/local's LinearHomotopy over a symbol t.
+Proof proof(const ClaimContext& ctx) {
+  using X = GiNaC::ex;
+  const GiNaC::symbol t("t");
+  const affinterp::local::LinearHomotopy<X> A_L{Mat2<X>(-affinterp::local::identity2<X>())};
+  const std::vector<proofs::Identity> identities = {
+      {"collapse", "A^L(1/2) = 0 for A = −I", proofs::to_ginac<2, 2>(A_L(X(1) / 2)),
+       proofs::to_ginac<2, 2>(Mat2<X>::Constant(X(0)))},
+      {"determinant", "det A^L(t) = (1 − 2t)² for A = −I", det2<X>(A_L(t)), GiNaC::pow(1 - 2 * t, 2)},
+      {"admissible", "det(−I) = 1 > 0", det2<X>(A_L.A), X(1)},
+  };
+  return proofs::identity_proof("A = −I and every real t",
+                                "identities over a symbol t from theory/local's LinearHomotopy and det2",
+                                proofs::prove_identities(identities, ctx.proof_files()));
+}
+
+Outcome check(const ClaimContext& ctx) {
   const Mat2<Rational> A = -affinterp::local::identity2<Rational>();
   const Mat2<Rational> half_way = affinterp::local::LinearHomotopy<Rational>{A}(Rational(1) / 2);
   const bool collapses =
@@ -47,6 +67,8 @@ Outcome check(const ClaimContext&) {
   outcome.verdict = collapses && det2(A) > 0 ? Verdict::confirmed : Verdict::refuted;
   outcome.summary = collapses ? "A = -I is in GL+(2) (det 1) and A^L(1/2) = 0 exactly; det A^L(t) = (1 - 2t)^2"
                               : "A^L(1/2) is not 0 for A = -I";
+  outcome.proof = proof(ctx);
+  if (outcome.verdict == Verdict::confirmed) weigh_confirmation_against_proof(outcome, "A = −I and every t");
   return outcome;
 }
 

@@ -1,12 +1,14 @@
 #pragma once
 // How a local claim is proved for all reals (issue 10): its sentences, decided by QEPCAD B and Z3
-// (experiments/proofs), the lemmas that reduce them (research FINDINGS §2: L1–L12), the polynomial identities
+// (experiments/proofs), the lemmas that reduce them (L1–L13, reports/proofs/LEMMAS.md), the polynomial identities
 // the method rests on (checked by exact polynomial arithmetic), and for a non-empty sentence a counterexample
 // shrunk to small rationals and re-verified by the suite's own exact evaluators.
 #include "experiments/claims/context.hpp"
-#include "experiments/claims/local/goodness_formulas.hpp"
 #include "experiments/claims/outcome.hpp"
+#include "experiments/claims/proof_strength.hpp"
+#include "experiments/proofs/condition_sentences.hpp"
 #include "experiments/proofs/decide_sentence.hpp"
+#include "experiments/proofs/goodness_formulas.hpp"
 #include "experiments/proofs/witness.hpp"
 
 #include <map>
@@ -17,19 +19,27 @@
 
 namespace affinterp::claims::local {
 
-/// ∃ variables: body, named and explained.
-proofs::Sentence sentence(std::string name, std::string meaning, std::vector<std::string> variables, Formula body);
+// The sentences and the goodness formulas are built by experiments/proofs, the same builders as the atlas's.
+using logic::Formula;
+using logic::Polynomial;
+using proofs::area_property;
+using proofs::cond_not_prop;
+using proofs::det;
+using proofs::det_of_blend;
+using proofs::norm_property;
+using proofs::norm_squared_of_blend;
+using proofs::PolyMat2;
+using proofs::product;
+using proofs::prop_not_cond;
+using proofs::rotation;
+using proofs::sentence;
+using proofs::svd_norm_G;
+using proofs::svd_norm_property;
+using proofs::trace;
+using proofs::transpose;
+using proofs::var;
 
-/// "<base>cond-not-prop.<level>": ∃ variables: domain ∧ condition ∧ ¬property.
-proofs::Sentence cond_not_prop(const std::string& base, const std::string& level,
-                               const std::vector<std::string>& variables, const Formula& domain,
-                               const Formula& condition, const Formula& property);
-/// "<base>prop-not-cond.<level>": ∃ variables: domain ∧ ¬condition ∧ property.
-proofs::Sentence prop_not_cond(const std::string& base, const std::string& level,
-                               const std::vector<std::string>& variables, const Formula& domain,
-                               const Formula& condition, const Formula& property);
-
-/// The lemmas of the research that are sentences themselves, for every quadratic f = 1 + c1 t + c2 t².
+/// The lemmas (reports/proofs/LEMMAS.md) that are sentences themselves, for every quadratic f = 1 + c1 t + c2 t².
 proofs::Sentence lemma_L1();       ///< monotone as written ⇔ f′ of one sign on [0, 1]
 proofs::Sentence lemma_L2();       ///< f′ affine: f′ of one sign on [0, 1] ⇔ read at t = 0, 1
 proofs::Sentence lemma_L2_area();  ///< (f > 0 on [0, 1] ∧ monotone) ⇔ (f(1) > 0 ∧ endpoint-monotone)
@@ -42,6 +52,8 @@ struct ProofPlan {
   std::vector<proofs::Sentence> sentences;  ///< in the order the method reads them
   /// Identities the method rests on: name → (lhs − rhs), which must be the zero polynomial.
   std::vector<std::pair<std::string, Polynomial>> identities;
+  /// An external published theorem the method uses as a step (experiments/proofs/citations.hpp); empty: none.
+  std::string cites{};
 };
 
 /// A plan carried out: the proof as claims.json records it, and each sentence's decision (for witnesses).
@@ -50,8 +62,8 @@ struct ProofRun {
   std::map<std::string, proofs::SentenceDecision> decisions;
   nlohmann::json identities;  ///< name → "zero polynomial"
 
-  /// Every sentence decided by QEPCAD and Z3 alike.
-  bool decided_by_two() const { return proof.decided_by_two(); }
+  /// Every sentence decided, by one decider at least and with no other answering otherwise.
+  bool decided() const { return proof.decided(); }
   /// The agreed result of the named sentence.
   std::string result(const std::string& name) const;
 };
@@ -71,9 +83,10 @@ std::optional<logic::Point> counterexample(const ProofRun& run, const std::strin
 /// A point as claims.json writes exact values: variable → "p/q".
 nlohmann::json exact_point(const logic::Point& p);
 
-/// Attaches the proof. A confirmed verdict whose sentences two deciders decided becomes Strength::proved, and
-/// a non-empty sentence then contradicts it (throws std::runtime_error naming it: the check fails loudly);
-/// refuted and corrected verdicts keep an exact counterexample as their strength, with the proof attached.
+/// Attaches the proof. A confirmed verdict whose sentences were decided takes the proof's strength
+/// (proof_strength: proved, one decider, citing), and a non-empty sentence then contradicts it (throws
+/// std::runtime_error naming it: the check fails loudly); refuted and corrected verdicts keep an exact counterexample
+/// as their strength, with the proof attached.
 void attach_proof(Outcome& outcome, ProofRun run);
 
 /// Throws std::runtime_error when the verdict the proof reaches (when it reaches one) differs from the

@@ -55,6 +55,22 @@ Mat2<QSqrt3> rotation_pi_thirds(int k) {
 
 Mat2<QSqrt3> product(const Mat2<QSqrt3>& a, const Mat2<QSqrt3>& b) { return a.lazyProduct(b); }
 
+/// The example as printed: the triangles P, Q of eq. (1), A, the SVD's D and the polar factor S.
+struct PrintedExample {
+  affinterp::local::Triangle<QSqrt3> P, Q;
+  Mat2<QSqrt3> A, D, S;
+};
+
+PrintedExample printed_example() {
+  PrintedExample e;
+  e.P << q(0), q(0), q(2), q(0), q(3), q(0);  // p1 = (0,0), p2 = (0,3), p3 = (2,0)
+  e.Q << q(0), q(0, Rational(-9) / 4), q(Rational(-1) / 2), q(0), q(Rational(-15) / 4), q(0, Rational(3) / 2);
+  e.A << q(Rational(-1) / 4), q(0, Rational(-3) / 4), q(0, Rational(3) / 4), q(Rational(-5) / 4);
+  e.D << q(2), q(0), q(0), q(1);
+  e.S << q(Rational(5) / 4), q(0, Rational(-1) / 4), q(0, Rational(-1) / 4), q(Rational(7) / 4);
+  return e;
+}
+
 nlohmann::json surd_matrix(const Mat2<QSqrt3>& M) {
   nlohmann::json rows = nlohmann::json::array();
   for (int i = 0; i < 2; ++i) rows.push_back({to_string(M(i, 0)), to_string(M(i, 1))});
@@ -75,9 +91,8 @@ Formula differ(const PolyMat2& X, const PolyMat2& Y) {
 }
 
 /// The proof: every statement of the example as an existential sentence in r3 = √3 that is empty iff it holds.
-ProofPlan proof_plan(const ClaimContext& ctx, const affinterp::local::Triangle<QSqrt3>& P,
-                     const affinterp::local::Triangle<QSqrt3>& Q, const Mat2<QSqrt3>& A_printed,
-                     const Mat2<QSqrt3>& D_printed, const Mat2<QSqrt3>& S_printed) {
+ProofPlan proof_plan() {
+  const auto [P, Q, A_printed, D_printed, S_printed] = printed_example();
   const Polynomial r3 = var("r3");
   const Formula sqrt3 = logic::equal(r3 * r3, 3) && logic::greater(r3, 0);
   const PolyMat2 A = in_r3(A_printed), D = in_r3(D_printed), S = in_r3(S_printed);
@@ -98,8 +113,8 @@ ProofPlan proof_plan(const ClaimContext& ctx, const affinterp::local::Triangle<Q
       "every statement as an existential sentence in r3 that is empty iff it holds: the decompositions and eq. (1) "
       "by their entries; Def 2.2.1 at level D (Lemma L1) for det((1-t)I + tB), B = A, D, S (Lemma L5: the "
       "rotations have det 1); Def 2.2.2 at level E (Lemmas L3, L4) for ((1-t)I + tB)v, B = A, S; beyond the "
-      "thesis, the SVD interpolation of D = diag(2, 1) at level G (Lemma L9) for beta != 0" +
-          std::string(ctx.size == Size::full ? "; SVD area also at level L (Def 2.2.1 as written)" : ""),
+      "thesis, the SVD interpolation of D = diag(2, 1) at level G (Lemma L9) for beta != 0; SVD area also at level L "
+      "(Def 2.2.1 as written)",
       {in_sqrt3("decompositions-wrong",
                 "R_{pi/3} D R_{-5pi/3} != A, R_{-4pi/3} S != A, S not positive definite, or A P != Q (eq. (1))",
                 differ(svd, A) || differ(polar, A) || !S_positive || logic::disjunction(eq1)),
@@ -113,19 +128,12 @@ ProofPlan proof_plan(const ClaimContext& ctx, const affinterp::local::Triangle<Q
                 "beyond the thesis: some beta != 0 makes the SVD interpolation of diag(2, 1) good for norm", {"beta"},
                 logic::not_equal(var("beta"), 0) && svd_norm_property(Polynomial(2), Polynomial(1), var("beta")))},
       {}};
-  if (ctx.size == Size::full)
-    plan.sentences.push_back(in_sqrt3("svd-not-good-area.L", "the same at level L", !area_property(D, "L")));
+  plan.sentences.push_back(in_sqrt3("svd-not-good-area.L", "the same at level L", !area_property(D, "L")));
   return plan;
 }
 
 Outcome check(const ClaimContext& ctx) {
-  affinterp::local::Triangle<QSqrt3> P, Q;
-  P << q(0), q(0), q(2), q(0), q(3), q(0);  // p1 = (0,0), p2 = (0,3), p3 = (2,0)
-  Q << q(0), q(0, Rational(-9) / 4), q(Rational(-1) / 2), q(0), q(Rational(-15) / 4), q(0, Rational(3) / 2);
-  Mat2<QSqrt3> A_printed, D, S_printed;
-  A_printed << q(Rational(-1) / 4), q(0, Rational(-3) / 4), q(0, Rational(3) / 4), q(Rational(-5) / 4);
-  D << q(2), q(0), q(0), q(1);
-  S_printed << q(Rational(5) / 4), q(0, Rational(-1) / 4), q(0, Rational(-1) / 4), q(Rational(7) / 4);
+  const auto [P, Q, A_printed, D, S_printed] = printed_example();
 
   const auto map = affinterp::local::affine_map(P, Q);
   const bool A_right =
@@ -175,7 +183,7 @@ Outcome check(const ClaimContext& ctx) {
                           "neither area nor norm, SVD is good for area, polar for area and norm (printed angles lie "
                           "outside the stated ranges)"
                         : "the example's matrices or goodness statements do not all hold";
-  attach_proof(outcome, run_proof(ctx, proof_plan(ctx, P, Q, A_printed, D, S_printed)));
+  attach_proof(outcome, run_proof(ctx, proof_plan()));
   if (ctx.draws_figures()) outcome.figures = ctx.figure_refs(plots::draw_thesis_figures_2_2_to_2_5(ctx.figure_dir));
   if (outcome.verdict == Verdict::refuted)
     outcome.counterexample = {

@@ -54,6 +54,8 @@ AreaParameters linear_parameters() {
           ""};
 }
 
+ProofPlan proof_plan() { return area_theorem_plan(linear_parameters()); }
+
 /// The simplest integer matrix (entries in [−2, 2], least Σ|a_ij|) with det > 0 where `condition` holds
 /// and the linear interpolation is not good for area.
 std::optional<Mat2<Rational>> simplest_integer_counterexample() {
@@ -110,7 +112,7 @@ Outcome check(const ClaimContext& ctx) {
                               {"witness", area_witness(shown)}};
   }
   const AreaParameters parameters = linear_parameters();
-  ProofRun proof = run_proof(ctx, area_theorem_plan(ctx, parameters));
+  ProofRun proof = run_proof(ctx, proof_plan());
   require_agreement(outcome, area_proof_verdict(proof));
   if (printed.disagreements() > 0) outcome.counterexample["from_proof"] = area_proof_counterexample(proof, parameters);
   attach_proof(outcome, std::move(proof));

@@ -45,6 +45,8 @@ AreaParameters svd_parameters() {
           "det A_s(t) = det R_{t alpha} det((1-t)I + tD) det R_{t beta} and det R = cos^2 + sin^2 = 1 (Lemma L5)"};
 }
 
+ProofPlan proof_plan() { return area_theorem_plan(svd_parameters()); }
+
 Outcome check(const ClaimContext& ctx) {
   const Rational step = ctx.pick(Rational(1) / 4, Rational(1) / 32);
   std::vector<std::pair<Rational, Rational>> cases;  // (x, y), x >= y > 0
@@ -76,7 +78,7 @@ Outcome check(const ClaimContext& ctx) {
                               {"witness", area_witness(diagonal(x, y))}};
   }
   const AreaParameters parameters = svd_parameters();
-  ProofRun proof = run_proof(ctx, area_theorem_plan(ctx, parameters));
+  ProofRun proof = run_proof(ctx, proof_plan());
   require_agreement(outcome, area_proof_verdict(proof));
   if (printed.disagreements() > 0) outcome.counterexample["from_proof"] = area_proof_counterexample(proof, parameters);
   attach_proof(outcome, std::move(proof));

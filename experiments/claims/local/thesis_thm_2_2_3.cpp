@@ -1,6 +1,7 @@
 #include "experiments/claims/claim.hpp"
 #include "experiments/claims/local/condition_sweep.hpp"
 #include "experiments/claims/local/local_proof.hpp"
+#include "experiments/claims/local/printed_conditions.hpp"
 #include "experiments/claims/local/region_figure.hpp"
 #include "experiments/claims/local/simple_values.hpp"
 #include "experiments/claims/values.hpp"
@@ -33,7 +34,7 @@ const ClaimDeclaration claim{{
 // Reading: A_s(t) = R_{tα}((1−t)I + tD)R_{tβ} is built from a given SVD (x, y, α, β), x, y > 0, α, β ∈ [0, 2π) as
 //   in the thesis, and the condition is on x, y only. |A_s(t)v| = |((1−t)I + tD)R_{tβ}v|: α drops out, β does not,
 //   and the proof's formula for |A_s(t)v|² omits R_{tβ}.
-// Method: proof for all reals (issue 10): by Lemma L9 (analytic; research FINDINGS §2) A_s is good for norm iff
+// Method: proof for all reals (issue 10): by Lemma L9 (reports/proofs/LEMMAS.md) A_s is good for norm iff
 //   G(t) ≥ 0 on [0, 1] (level G). Sentences in x, y, β decided by QEPCAD B and Z3: printed condition ∧ ¬G-level
 //   property (non-empty: its point, shrunk and re-verified, is the counterexample), ¬condition ∧ G(1) ≥ 0 (the
 //   property's instance t = 1: empty, so the property implies the condition), and both directions at β = 0 (empty:
@@ -90,19 +91,17 @@ std::string angle_name(int k, int m) {
 }
 
 /// The proof: the printed condition against Def 2.2.2 for A_s(t) (Lemma L9), for all real x, y > 0 and β.
-ProofPlan proof_plan(const ClaimContext& ctx) {
+ProofPlan proof_plan() {
   const Polynomial x = var("x"), y = var("y"), beta = var("beta"), zero(0);
   const Formula domain = logic::greater(x, 0) && logic::greater(y, 0), condition = thm_2_2_3_formula(x, y);
   ProofPlan plan{
       "D = diag(x, y) with x, y > 0 and the right angle beta real (radians; alpha plays no part)",
-      "Lemma L9 (analytic, research FINDINGS §2): A_s(t) = R_{t alpha}((1-t)I + tD)R_{t beta} is good for norm iff "
+      "Lemma L9 (by hand, reports/proofs/LEMMAS.md): A_s(t) = R_{t alpha}((1-t)I + tD)R_{t beta} is good for norm iff "
       "G(t) = 4(x-1)(y-1)(1+t(x-1))(1+t(y-1)) - beta^2 t^2 (x-y)^2 (2+t(x+y-2))^2 >= 0 for all t in [0, 1] (level "
       "G). printed.cond-not-prop.G non-empty refutes the printed condition; printed.prop-not-cond.inst (the "
       "property's instance t = 1, a weakening) empty shows the property implies it; at beta = 0 both directions "
-      "empty: the printed condition is exact there (the thesis's proof drops R_{t beta})" +
-          std::string(ctx.size == Size::full
-                          ? "; beta = 0 also at level D of Def 2.2.2 for (1-t)I + tD, without Lemma L9 (Lemma L1)"
-                          : ""),
+      "empty: the printed condition is exact there (the thesis's proof drops R_{t beta}); beta = 0 also at level D of "
+      "Def 2.2.2 for (1-t)I + tD, without Lemma L9 (Lemma L1)",
       {cond_not_prop("printed.", "G", {"x", "y", "beta"}, domain, condition, svd_norm_property(x, y, beta)),
        sentence("printed.prop-not-cond.inst",
                 "x, y > 0, beta where G(1) >= 0 (implied by the property) and the printed condition fails",
@@ -111,11 +110,9 @@ ProofPlan proof_plan(const ClaimContext& ctx) {
        cond_not_prop("beta0.", "G", {"x", "y"}, domain, condition, svd_norm_property(x, y, zero)),
        prop_not_cond("beta0.", "G", {"x", "y"}, domain, condition, svd_norm_property(x, y, zero))},
       {}};
-  if (ctx.size == Size::full) {
-    const PolyMat2 D{{{x, zero}, {zero, y}}};
-    plan.sentences.push_back(cond_not_prop("beta0.", "D", {"x", "y"}, domain, condition, norm_property(D, "D")));
-    plan.sentences.push_back(prop_not_cond("beta0.", "D", {"x", "y"}, domain, condition, norm_property(D, "D")));
-  }
+  const PolyMat2 D{{{x, zero}, {zero, y}}};
+  plan.sentences.push_back(cond_not_prop("beta0.", "D", {"x", "y"}, domain, condition, norm_property(D, "D")));
+  plan.sentences.push_back(prop_not_cond("beta0.", "D", {"x", "y"}, domain, condition, norm_property(D, "D")));
   return plan;
 }
 
@@ -236,8 +233,8 @@ Outcome check(const ClaimContext& ctx) {
     outcome.summary =
         std::to_string(tally.property_only.count) + " cases fail the printed condition but are good for norm";
   }
-  ProofRun proof = run_proof(ctx, proof_plan(ctx));
-  if (proof.decided_by_two()) {
+  ProofRun proof = run_proof(ctx, proof_plan());
+  if (proof.decided()) {
     const bool printed_exact =
         proof.result("printed.cond-not-prop.G") == "empty" && proof.result("printed.prop-not-cond.inst") == "empty";
     require_agreement(outcome, printed_exact ? Verdict::confirmed : Verdict::refuted);

@@ -48,6 +48,8 @@ AreaParameters polar_parameters() {
           "det A_p(t) = det R_{t gamma} det((1-t)I + tS) and det R = cos^2 + sin^2 = 1 (Lemma L5)"};
 }
 
+ProofPlan proof_plan() { return area_theorem_plan(polar_parameters()); }
+
 Outcome check(const ClaimContext& ctx) {
   const Rational step = ctx.pick(Rational(1) / 4, Rational(1) / 16);
   using Case = std::tuple<Rational, Rational, Rational>;  // (x, y, h), xy > h²
@@ -83,7 +85,7 @@ Outcome check(const ClaimContext& ctx) {
                               {"witness", area_witness(S_of(c))}};
   }
   const AreaParameters parameters = polar_parameters();
-  ProofRun proof = run_proof(ctx, area_theorem_plan(ctx, parameters));
+  ProofRun proof = run_proof(ctx, proof_plan());
   require_agreement(outcome, area_proof_verdict(proof));
   if (printed.disagreements() > 0) outcome.counterexample["from_proof"] = area_proof_counterexample(proof, parameters);
   attach_proof(outcome, std::move(proof));

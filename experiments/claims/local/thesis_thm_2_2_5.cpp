@@ -2,8 +2,10 @@
 #include "experiments/claims/local/condition_sweep.hpp"
 #include "experiments/claims/local/local_proof.hpp"
 #include "experiments/claims/local/norm_witness.hpp"
+#include "experiments/claims/local/printed_conditions.hpp"
 #include "experiments/claims/local/region_figure.hpp"
 #include "experiments/claims/local/simple_values.hpp"
+#include "experiments/proofs/citations.hpp"
 #include "theory/local/goodness.hpp"
 #include "theory/local/thesis_conditions.hpp"
 
@@ -69,7 +71,8 @@ ProofPlan proof_plan() {
           {{"1/2 d/dt ||((1-t)I + tS)v||^2 at t = 0 is v^T P v", half_slope.substitute("t", 0) - P},
            {"1/2 d/dt ||((1-t)I + tS)v||^2 at t = 1 is v^T Q v", half_slope.substitute("t", 1) - Q},
            {"1/2 d/dt ||((1-t)I + tS)v||^2 is affine in t",
-            half_slope - half_slope.substitute("t", 0) - var("t") * (Q - P)}}};
+            half_slope - half_slope.substitute("t", 0) - var("t") * (Q - P)}},
+          std::string(proofs::citations::dines)};
 }
 
 Outcome check(const ClaimContext& ctx) {
@@ -117,12 +120,12 @@ Outcome check(const ClaimContext& ctx) {
                               {"good_for_norm", property(c)},          {"witness", norm_witness(S_of(c))}};
   }
   ProofRun proof = run_proof(ctx, proof_plan());
-  if (proof.decided_by_two())
+  if (proof.decided())
     require_agreement(outcome, proof.result("printed.cond-not-prop.N") == "empty" &&
                                        proof.result("printed.prop-not-cond.N") == "empty"
                                    ? Verdict::confirmed
                                    : Verdict::refuted);
-  if (proof.decided_by_two() && proof.result("printed.second-conjunct-implied") == "empty")
+  if (proof.decided() && proof.result("printed.second-conjunct-implied") == "empty")
     outcome.summary += "; the second conjunct is implied by (x-1)(y-1) >= h^2 on the domain (atlas.polar.norm)";
   attach_proof(outcome, std::move(proof));
   if (ctx.draws_figures()) {

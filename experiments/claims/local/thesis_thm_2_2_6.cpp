@@ -33,7 +33,7 @@ const ClaimDeclaration claim{{
 // Sizes: quick (x, y) and u steps 1/2, sentences at level E; full 1/8, also level D; x ≥ y in (0, 4], u ∈ [−2, 2].
 
 /// The proof: SVD and polar interpolation of A = R_α D R_β are good for area together, for every real x, y > 0, β.
-ProofPlan proof_plan(const ClaimContext& ctx) {
+ProofPlan proof_plan() {
   const Polynomial x = var("x"), y = var("y"), c = var("c"), s = var("s");
   const PolyMat2 D{{{x, Polynomial(0)}, {Polynomial(0), y}}}, R = rotation(c, s);
   const PolyMat2 S = product(product(transpose(R), D), R);  // the polar factor of A (Lemma L11)
@@ -44,15 +44,15 @@ ProofPlan proof_plan(const ClaimContext& ctx) {
       "S = R_beta^T D R_beta, the polar factor of A = R_alpha D R_beta",
       "Def 2.2.1 for det A_s(t) = det((1-t)I + tD) and det A_p(t) = det((1-t)I + tS) (the rotations have "
       "det c^2 + s^2 = 1, Lemma L5; A = (R_alpha R_beta) S as R_beta R_beta^T = (c^2 + s^2) I, L11) at "
-      "level E (Lemmas L1, L2, L2 decided as its own sentences): no point where exactly one is good" +
-          std::string(ctx.size == Size::full ? "; second formulation at level D (L1 as its own sentence)" : "") +
-          "; and the thesis's route: tr S = tr D and det S = det D wherever c^2 + s^2 = 1",
+      "level E (Lemmas L1, L2, L2 decided as its own sentences): no point where exactly one is good; second "
+      "formulation at level D (L1 as its own sentence); and the thesis's route: tr S = tr D and det S = det D wherever "
+      "c^2 + s^2 = 1",
       {lemma_L2(), lemma_L2_area()},
       {{"R_beta R_beta^T = (c^2 + s^2) I (entry 11)", product(R, transpose(R))[0][0] - (c * c + s * s)},
        {"R_beta R_beta^T = (c^2 + s^2) I (entry 12)", product(R, transpose(R))[0][1]},
        {"det R_beta = c^2 + s^2", det(R) - (c * c + s * s)}}};
-  std::vector<std::string> levels{"E"};
-  if (ctx.size == Size::full) levels.push_back("D"), plan.sentences.push_back(lemma_L1());
+  plan.sentences.push_back(lemma_L1());
+  const std::vector<std::string> levels{"E", "D"};
   for (const std::string& level : levels) {
     const Formula svd_good = area_property(D, level), polar_good = area_property(S, level);
     plan.sentences.push_back(sentence("svd-good-polar-not." + level,
@@ -119,7 +119,7 @@ Outcome check(const ClaimContext& ctx) {
                               {"u", exact::to_string(std::get<2>(c))},
                               {"S", exact_matrix(S_of(c))}};
   }
-  attach_proof(outcome, run_proof(ctx, proof_plan(ctx)));
+  attach_proof(outcome, run_proof(ctx, proof_plan()));
   return outcome;
 }
 

@@ -1,6 +1,7 @@
 #include "experiments/claims/sym3/speed_claim.hpp"
 
 #include "plots/figure.hpp"
+#include "plots/runs_against_band.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -18,11 +19,14 @@ constexpr std::string_view kAboutReading =
 
 constexpr std::string_view kIntervalRule =
     "ratio = median(time of slow) / median(time of fast) over the benchmark's repetitions (at least 10); "
-    "ratio_ci95 = the 95% percentile bootstrap interval (10,000 resamples of each benchmark's repetitions with "
-    "replacement, independently, seed 2015; experiments/claims/bootstrap.hpp). Reproduced iff ratio_ci95 lies "
+    "ratio_ci95 = the 95% percentile bootstrap interval (10,000 resamples, seed 2015; with one process each "
+    "benchmark's repetitions are resampled with replacement, independently; experiments/bench/bootstrap.hpp). "
+    "Reproduced iff ratio_ci95 lies "
     "in the band, not-reproduced iff it lies outside it, inconclusive iff it straddles an edge (or fewer than 10 "
-    "repetitions were recorded). The interval covers the run-to-run spread within one benchmark run, not the "
-    "drift between runs on a shared machine";
+    "repetitions were recorded). Each benchmark program runs in several whole processes, interleaved with the "
+    "other programs (A B A B ...; experiments/reproduce.sh): the bootstrap then draws the processes first and the "
+    "repetitions within them second (experiments/bench/bootstrap.hpp), so the interval covers the drift between "
+    "processes on a shared machine as well as the spread within one";
 
 constexpr std::string_view kPaperMachine =
     "Intel Core i7 1.9 GHz, 4 GB RAM, Windows 8 (64 bit), Visual Studio 2010 /O2 (thesis §3.4)";
@@ -35,11 +39,32 @@ Outcome inconclusive(std::string summary, const std::string& method) {
   return outcome;
 }
 
-nlohmann::json machine_of(const BenchResults& results) {
-  return {{"cpu", results.machine},
-          {"compiler", results.compiler},
-          {"flags", results.flags},
-          {"benchmark_file", results.file.filename().string()}};
+/// The widest vector extension among a run's CPU flags, or that they were not recorded.
+std::string vector_isa(const nlohmann::json& machine) {
+  const nlohmann::json flags = machine.value("cpu_flags", nlohmann::json());
+  if (!flags.is_string()) return "CPU flags not recorded";
+  std::string list = " ";  // each flag between spaces
+  list += flags.get<std::string>();
+  list += ' ';
+  for (const char* isa : {"avx512f", "avx2", "avx", "sse4_2"}) {
+    std::string flag = " ";
+    flag += isa;
+    flag += ' ';
+    if (list.find(flag) != std::string::npos) return isa;
+  }
+  return "no AVX";
+}
+
+std::string text_of(const nlohmann::json& value) {
+  return value.is_string() ? value.get<std::string>() : value.is_null() ? "?" : value.dump();
+}
+
+/// "Intel Xeon, 2 cores, avx512f; g++ 12.2.0 -O3 -DNDEBUG -Wall -Wextra -march=native".
+std::string machine_text(const nlohmann::json& machine) {
+  std::string flags = text_of(machine.value("flags", nlohmann::json()));
+  flags.erase(0, flags.find_first_not_of(' '));
+  return text_of(machine.value("cpu", nlohmann::json())) + ", " + text_of(machine.value("cores", nlohmann::json())) +
+         " cores, " + vector_isa(machine) + "; " + text_of(machine.value("compiler", nlohmann::json())) + " " + flags;
 }
 
 }  // namespace
@@ -54,6 +79,11 @@ std::string band_text(double paper) {
 std::string ratio_text(const Measured& m) {
   if (!m.ci95) return fixed(m.value) + "× (no interval: " + std::to_string(m.repetitions) + " repetitions)";
   return fixed(m.value) + "× (95% CI " + fixed(m.ci95->lo) + "–" + fixed(m.ci95->hi) + ")";
+}
+
+std::string ratio_text(const bench::RecordedRun& run, const std::string& key) {
+  const auto figure = run.figures.find(key);
+  return figure == run.figures.end() ? "not measured" : ratio_text(figure->second.measured);
 }
 
 std::string fixed(double x, int digits) {
@@ -82,7 +112,7 @@ std::variant<BenchResults, Outcome> load(const RunSettings& ctx, const std::stri
   if (ctx.bench_dir.empty()) return inconclusive("no benchmark folder given: " + run, method);
   std::optional<BenchResults> results;
   try {
-    results = read_bench_results(ctx.bench_dir / (bench + ".json"), counter);
+    results = bench::read_bench_results(ctx.bench_dir / (bench + ".json"), counter);
   } catch (const std::runtime_error& e) {
     return inconclusive(std::string("unreadable benchmark output: ") + e.what() + "; " + run, method);
   }
@@ -92,21 +122,135 @@ std::variant<BenchResults, Outcome> load(const RunSettings& ctx, const std::stri
   return *results;
 }
 
-Outcome about_ratio_outcome(const BenchResults& results, std::string_view slow, std::string_view fast, double paper,
-                            const std::string& method, std::uint64_t sample_size) {
-  const Measured ratio = measured_ratio(results, slow, fast);
+std::variant<std::vector<bench::RecordedRun>, Outcome> load_runs(const RunSettings& ctx, const bench::Program& program,
+                                                                 const std::string& method,
+                                                                 std::initializer_list<std::string_view> needed,
+                                                                 const std::string& hint) {
+  const std::string name(program.name);
+  auto latest = load(ctx, name, std::string(program.counter), method, needed, hint);
+  if (ctx.bench_dir.empty()) return std::get<Outcome>(latest);
+  std::vector<bench::RecordedRun> runs;
+  try {
+    runs = bench::runs_of(ctx.bench_dir);
+  } catch (const std::runtime_error& e) {
+    return inconclusive(std::string("unreadable benchmark output: ") + e.what(), method);
+  }
+  // A run counts when it ran the program; the benchmark files not recorded yet only when they hold `needed`.
+  std::erase_if(runs, [&](const bench::RecordedRun& run) {
+    return !run.programs.contains(name) || (!run.recorded && std::holds_alternative<Outcome>(latest));
+  });
+  if (runs.empty()) {
+    if (auto* outcome = std::get_if<Outcome>(&latest)) return *outcome;
+    return inconclusive("no recorded run of " + name + " (reports/bench/history/)", method);
+  }
+  return runs;
+}
+
+std::string run_label(const bench::RecordedRun& run) {
+  std::string cpu = text_of(run.machine.value("cpu", nlohmann::json()));
+  for (const char* noise : {"(R)", "(TM)", " Processor", " CPU"})
+    for (std::size_t at; (at = cpu.find(noise)) != std::string::npos;) cpu.erase(at, std::string_view(noise).size());
+  return run.date.substr(0, 10) + " " + cpu;
+}
+
+RunsDecision decide_runs(const std::vector<bench::RecordedRun>& runs, const std::vector<Reading>& readings,
+                         const std::string& title) {
+  RunsDecision decision;
+  nlohmann::json columns = {"run", "machine", "processes"};
+  for (const Reading& reading : readings) columns.push_back(reading.label + " (95% CI)");
+  columns.push_back("verdict");
+  decision.table = {{"title", title}, {"columns", columns}, {"rows", nlohmann::json::array()}};
+  decision.runs = nlohmann::json::array();
+  for (const bench::RecordedRun& run : runs) {
+    nlohmann::json row = {run.id + (run.recorded ? "" : " (not recorded yet)"), machine_text(run.machine)};
+    nlohmann::json figures = nlohmann::json::object();
+    Verdict verdict = Verdict::reproduced;
+    std::size_t processes = 0;
+    std::vector<std::string> cells;
+    for (const Reading& reading : readings) {
+      const auto figure = run.figures.find(reading.key);
+      if (figure == run.figures.end()) {
+        verdict = all_of({verdict, Verdict::inconclusive});
+        cells.push_back("not measured");
+        continue;
+      }
+      const Measured& m = figure->second.measured;
+      processes = std::max(processes, m.processes);
+      verdict = all_of({verdict, verdict_of(m, reading.band)});
+      figures[reading.label] = to_json(m, reading.band, "value");
+      cells.push_back(fixed(m.value) + (m.ci95 ? " [" + fixed(m.ci95->lo) + ", " + fixed(m.ci95->hi) + "]" : "") +
+                      ": " + std::string(to_string(verdict_of(m, reading.band))));
+    }
+    row.push_back(processes);
+    for (auto& cell : cells) row.push_back(cell);
+    row.push_back(to_string(verdict));
+    decision.table["rows"].push_back(row);
+    decision.per_run.push_back(verdict);
+    decision.runs.push_back({{"run", run.id},
+                             {"recorded", run.recorded},
+                             {"date", run.date},
+                             {"machine", run.machine},
+                             {"note", run.note},
+                             {"figures", figures},
+                             {"verdict", to_string(verdict)}});
+  }
+  decision.verdict = across_runs(decision.per_run);
+  return decision;
+}
+
+std::string runs_summary(const std::vector<bench::RecordedRun>& runs, const RunsDecision& decision) {
+  std::string text = std::string(to_string(decision.verdict)) + " over " + std::to_string(runs.size()) +
+                     (runs.size() == 1 ? " run" : " recorded runs") + " (";
+  for (std::size_t r = 0; r < runs.size(); ++r)
+    text += (r ? "; " : "") + run_label(runs[r]) + ": " + std::string(to_string(decision.per_run[r]));
+  return text + ")";
+}
+
+std::vector<std::string> runs_chart(const RunSettings& ctx, const std::vector<bench::RecordedRun>& runs,
+                                    const std::vector<Reading>& readings, const std::string& stem,
+                                    const std::string& title) {
+  if (!ctx.draws_figures()) return {};
+  std::vector<plots::BandPanel> panels;
+  for (const Reading& reading : readings) {
+    plots::BandPanel& panel =
+        panels.emplace_back(plots::BandPanel{reading.label, "×", reading.band.lo, reading.band.hi, {}});
+    for (const bench::RecordedRun& run : runs) {
+      const auto figure = run.figures.find(reading.key);
+      if (figure == run.figures.end()) continue;
+      const Measured& m = figure->second.measured;
+      panel.unit = figure->second.unit;
+      panel.runs.push_back(
+          {run_label(run), m.value, m.ci95 ? std::optional(std::pair{m.ci95->lo, m.ci95->hi}) : std::nullopt});
+    }
+  }
+  return RunSettings::figure_refs(plots::draw_runs_against_band(ctx.figure_stem(stem), title, panels));
+}
+
+Outcome about_ratio_outcome(const std::vector<bench::RecordedRun>& runs, const std::string& key, double paper,
+                            const std::string& method, std::uint64_t sample_size, const std::vector<Reading>& more) {
   const Interval band = about_band(paper);
+  std::vector<Reading> readings{{key, band, key}};
+  readings.insert(readings.end(), more.begin(), more.end());
+  const RunsDecision decision = decide_runs(runs, readings, "Each recorded run (reports/bench/history/)");
   Outcome outcome;
-  outcome.verdict = verdict_of(ratio, band);
+  outcome.verdict = decision.verdict;
   outcome.evidence.method = method;
   outcome.evidence.sample_size = sample_size;
   outcome.evidence.tolerance = kAboutFactor;
   outcome.evidence.details = {
-      {"paper_ratio", paper},   {"paper_machine", kPaperMachine}, {"benchmarks", {slow, fast}},
-      {"about", kAboutReading}, {"rule", kIntervalRule},
+      {"paper_ratio", paper},
+      {"paper_machine", kPaperMachine},
+      {"about", kAboutReading},
+      {"rule", std::string(kIntervalRule) + ". Across runs: " + std::string(kAcrossRunsRule)},
+      {"tables", nlohmann::json::array({decision.table})},
   };
-  outcome.evidence.measurements = to_json(ratio, band);
-  outcome.evidence.measurements["machine"] = machine_of(results);
+  const bench::RecordedRun& latest = runs.back();
+  if (const auto figure = latest.figures.find(key); figure != latest.figures.end())
+    outcome.evidence.measurements = to_json(figure->second.measured, band);
+  outcome.evidence.measurements["latest_run"] = latest.id;
+  outcome.evidence.measurements["machine"] = latest.machine;
+  outcome.evidence.measurements["runs"] = decision.runs;
+  outcome.evidence.measurements["across_runs"] = runs_summary(runs, decision);
   return outcome;
 }
 

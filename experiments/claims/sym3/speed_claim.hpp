@@ -1,11 +1,12 @@
 #pragma once
 // What the measured speed claims of thesis §3.4 (Figs 3.1–3.3) share: reading the benchmark JSON that
-// experiments/reproduce.sh writes before the claims run, the verdict on an "about r× faster" from the ratio's
-// bootstrap interval against the band the wording allows (measured.hpp), and the bar chart.
-#include "experiments/claims/bench_results.hpp"
+// experiments/reproduce.sh writes before the claims run and the history of recorded runs (bench/history.hpp),
+// the verdict on each run from its figures' bootstrap intervals against the bands the wording allows and on the
+// runs together (speed_verdict.hpp), the per-run table and plot, and the bar chart of the latest run.
+#include "experiments/bench/history.hpp"
 #include "experiments/claims/context.hpp"
-#include "experiments/claims/measured.hpp"
 #include "experiments/claims/outcome.hpp"
+#include "experiments/claims/speed_verdict.hpp"
 
 #include <cstdint>
 #include <initializer_list>
@@ -30,6 +31,8 @@ std::string band_text(double paper);
 
 /// "2.10× (95% CI 2.01–2.18)", or "2.10× (no interval: n repetitions)".
 std::string ratio_text(const Measured& m);
+/// ratio_text of the figure `key` of `run`, or "not measured".
+std::string ratio_text(const bench::RecordedRun& run, const std::string& key);
 
 /// x with `digits` digits after the point.
 std::string fixed(double x, int digits = 2);
@@ -43,11 +46,54 @@ std::variant<BenchResults, Outcome> load(const RunSettings& ctx, const std::stri
                                          const std::string& method, std::initializer_list<std::string_view> needed,
                                          const std::string& hint = "");
 
-/// The part every "about N× faster" outcome shares: the verdict for time(slow) / time(fast) (medians of the
-/// repetitions, with the bootstrap interval) against about_band(paper), and the evidence fields
-/// (measurements: ratio, ratio_ci95, band, repetitions); callers add the summary and their own details.
-Outcome about_ratio_outcome(const BenchResults& results, std::string_view slow, std::string_view fast, double paper,
-                            const std::string& method, std::uint64_t sample_size);
+/// The recorded runs of `program` (bench::runs_of: the history, and the benchmark files when no entry records
+/// them and they hold `needed`), oldest first, or the inconclusive outcome saying why there are none (as load).
+std::variant<std::vector<bench::RecordedRun>, Outcome> load_runs(const RunSettings& ctx, const bench::Program& program,
+                                                                 const std::string& method,
+                                                                 std::initializer_list<std::string_view> needed,
+                                                                 const std::string& hint = "");
+
+/// One figure a verdict reads from every run (bench/speed_figures.hpp key), the band it must lie in, and its name
+/// in the table.
+struct Reading {
+  std::string key;
+  Interval band;
+  std::string label;
+};
+
+/// Each run decided on `readings` together (all_of; a reading the run lacks is inconclusive), and the runs
+/// together (across_runs).
+struct RunsDecision {
+  Verdict verdict = Verdict::inconclusive;
+  std::vector<Verdict> per_run;
+  /// {"title", "columns", "rows"}: a row per run (machine, date, each reading with its interval, verdict), for
+  /// evidence.details.tables.
+  nlohmann::json table;
+  /// [{"run", "recorded", "date", "machine", "note", "figures": {label: to_json(figure, band)}, "verdict"}].
+  nlohmann::json runs;
+};
+RunsDecision decide_runs(const std::vector<bench::RecordedRun>& runs, const std::vector<Reading>& readings,
+                         const std::string& title);
+
+/// "2026-11-23 Intel Xeon": a run's date and its CPU without trademark signs.
+std::string run_label(const bench::RecordedRun& run);
+
+/// "reproduced on both recorded runs (…)": what the runs together say, naming each run's verdict.
+std::string runs_summary(const std::vector<bench::RecordedRun>& runs, const RunsDecision& decision);
+
+/// Each run's readings with their intervals against their bands (plots/runs_against_band.hpp), one panel per
+/// reading; returns the figure's files for the report.
+std::vector<std::string> runs_chart(const RunSettings& ctx, const std::vector<bench::RecordedRun>& runs,
+                                    const std::vector<Reading>& readings, const std::string& stem,
+                                    const std::string& title);
+
+/// The part every "about N× faster" outcome shares: each run's ratio key (bench/speed_figures.hpp) against
+/// about_band(paper), plus `more` readings, decided run by run and across runs (decide_runs), and the evidence
+/// fields (measurements: the latest run's ratio, ratio_ci95, band, repetitions, processes, machine, and "runs";
+/// details: paper, rule, the per-run table); callers add the summary and their own details.
+Outcome about_ratio_outcome(const std::vector<bench::RecordedRun>& runs, const std::string& key, double paper,
+                            const std::string& method, std::uint64_t sample_size,
+                            const std::vector<Reading>& more = {});
 
 /// A bar chart of the benchmarks whose names start with `prefix` (all of them, in name order), with
 /// the ones the thesis compares highlighted; returns the figure's file for the report.

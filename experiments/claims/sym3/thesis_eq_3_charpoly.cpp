@@ -1,4 +1,5 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/proof_strength.hpp"
 #include "experiments/claims/values.hpp"
 #include "experiments/proofs/ginac_scalar.hpp"
 #include "experiments/proofs/identity.hpp"
@@ -95,7 +96,7 @@ Outcome check(const ClaimContext& ctx) {
   if (!proofs::proves(*out.proof))
     throw std::runtime_error("the grid says the identity holds, the identity prover that it does not");
   out.verdict = Verdict::confirmed;
-  out.strength = Strength::proved;
+  out.strength = *proof_strength(*out.proof);
   out.summary =
       "det(xE − S) = x³ − (tr S)x² + ((tr S)² − ‖S‖²_F)/2·x − det S holds identically (exact, "
       "polynomial identity decided on the grid {0,1,2,3}^7)";

@@ -1,6 +1,8 @@
 #include "experiments/claims/claim.hpp"
+#include "experiments/claims/confirmed_by_proof.hpp"
 #include "experiments/claims/sym3/exact_spectrum.hpp"
 #include "experiments/claims/sym3/sd_sweep.hpp"
+#include "experiments/proofs/identity.hpp"
 #include "theory/sym3/spectral_decomposition.hpp"
 
 namespace affinterp::claims::sym3 {
@@ -20,9 +22,24 @@ const ClaimDeclaration claim{{
 // Reading: the case is for exactly equal eigenvalues; the 10⁻⁶ threshold of the algorithm is an accuracy matter
 //   (thesis.exp.accuracy).
 // Method: the printed x = y = 0, z = e^{λ1} at 100 digits on rational S = Q diag(λ, λ, λ) Qᵀ (sd_sweep.hpp).
+//   Proof for every real λ1 (proof()): theory/sym3's case-1 coefficients over a symbol, xλ1² + yλ1 + z = e^{λ1}
+//   (e^{λ1} an independent variable); S = λ1 E by the spectral theorem, so xS² + yS + zE = e^{λ1} E = exp S.
 // Sizes: quick 10 matrices; full 100.
 
 using exact::Real100;
+
+/// xλ1² + yλ1 + z = e^{λ1} with theory/sym3's case-1 x, y, z over a symbol λ1.
+Proof proof(const ClaimContext& ctx) {
+  const GiNaC::symbol l1("l1");
+  const auto c = affinterp::sym3::sd_case1<GiNaC::ex>(l1);
+  return proofs::identity_proof(
+      "every real λ1 (symmetric S with a triple eigenvalue, i.e. S = λ1 E)",
+      "a rational identity in λ1 and e^λ1 (an independent variable on the grid) from theory/sym3's case 1 over "
+      "symbols; exp S = xS² + yS + zE follows by the spectral theorem",
+      {proofs::prove_identity(
+          {"interpolates-at-l1", "x l1² + y l1 + z = exp(l1)", c.x * l1 * l1 + c.y * l1 + c.z, GiNaC::exp(l1)},
+          ctx.proof_files())});
+}
 
 Outcome check(const ClaimContext& ctx) {
   Rng rng(ctx.seed);
@@ -35,8 +52,11 @@ Outcome check(const ClaimContext& ctx) {
       [](const Real100& l1, const Real100&, const Real100&) {
         return affinterp::sym3::sd_case1(l1);  // thesis §3.1.2, case 1
       });
-  return confirmed_or_refuted(ctx, s, "case 1 (x = y = 0, z = e^{λ1})",
-                              "λ1 = λ2 = λ3 = p/q, |p| ≤ 12, q ≤ 4 (then S = λ1 E)");
+  Outcome out = confirmed_or_refuted(ctx, s, "case 1 (x = y = 0, z = e^{λ1})",
+                                     "λ1 = λ2 = λ3 = p/q, |p| ≤ 12, q ≤ 4 (then S = λ1 E)");
+  out.proof = proof(ctx);
+  if (out.verdict == Verdict::confirmed) weigh_confirmation_against_proof(out, "every real triple eigenvalue λ1");
+  return out;
 }
 
 }  // namespace

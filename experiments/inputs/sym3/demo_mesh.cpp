@@ -1,6 +1,6 @@
 #include "experiments/inputs/sym3/demo_mesh.hpp"
 
-#include "experiments/inputs/sym3/off_file.hpp"
+#include "experiments/inputs/mesh_file.hpp"
 
 #include <cstdlib>
 #include <stdexcept>
@@ -21,7 +21,7 @@ std::optional<Mesh3> cgal_demo_mesh(std::string_view name, const fs::path& folde
       throw std::runtime_error("could not extract data/meshes/" + std::string(name) + " from " +
                                std::string(cgal_demo_archive));
   }
-  return read_off(file);
+  return io::read_off_surface(file);
 }
 
 std::optional<Mesh3> dragon_mesh(const fs::path& folder) {

@@ -5,4 +5,3 @@
 (declare-const h Real)
 (assert (and (> x 0) (> y 0) (> (+ (* (- 1) h h) (* x y)) 0) (<= (+ (* (- 1) h h) (* x y)) 0)))
 (check-sat)
-(get-model)

@@ -8,4 +8,3 @@
 (declare-const b22 Real)
 (assert (< (+ (* (- 2) b11 b12 p) (* (- 2) b11 b22 q) (* b11 b11 p p) (* b11 b11 q q) (* 2 b12 b21 q) (* b12 b12) (* (- 2) b21 b22 p) (* b21 b21 p p) (* b21 b21 q q) (* b22 b22)) 0))
 (check-sat)
-(get-model)

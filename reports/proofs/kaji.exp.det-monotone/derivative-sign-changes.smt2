@@ -6,4 +6,3 @@
 (declare-const E2 Real)
 (assert (and (> c 0) (> E 0) (> E2 0) (or (and (> L 0) (> (+ (- 1) c) 0)) (and (<= L 0) (<= (+ (- 1) c) 0))) (or (and (= L 0) (= (+ (- 1) c) 0)) (and (not (= L 0)) (not (= (+ (- 1) c) 0)))) (or (and (< L 0) (< (+ (- 1) c) 0)) (and (>= L 0) (>= (+ (- 1) c) 0))) (< (* E L) 0) (> (* E2 L) 0)))
 (check-sat)
-(get-model)

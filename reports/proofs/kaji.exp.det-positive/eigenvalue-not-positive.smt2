@@ -7,4 +7,3 @@
 (declare-const l2 Real)
 (assert (and (> x 0) (> y 0) (> (+ (* (- 1) h h) (* x y)) 0) (= (+ l1 l2 (* (- 1) x) (* (- 1) y)) 0) (= (+ (* h h) (* l1 l2) (* (- 1) x y)) 0) (or (<= l1 0) (<= l2 0))))
 (check-sat)
-(get-model)

@@ -4,4 +4,3 @@
 (declare-const l2 Real)
 (assert (forall ((t Real)) (and (> l1 0) (> l2 0) (not (= (+ l1 (* (- 1) l2)) 0)) (>= (+ 1 (* l1 l2 t t) (* l1 t) (* (- 1) l1 t t) (* l2 t) (* (- 1) l2 t t) (* (- 2) t) (* t t)) 0))))
 (check-sat)
-(get-model)

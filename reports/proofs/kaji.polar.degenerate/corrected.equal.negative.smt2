@@ -5,4 +5,3 @@
 (declare-const t Real)
 (assert (and (> l1 0) (> l2 0) (= (+ l1 (* (- 1) l2)) 0) (< (+ 1 (* l1 l2 t t) (* l1 t) (* (- 1) l1 t t) (* l2 t) (* (- 1) l2 t t) (* (- 2) t) (* t t)) 0)))
 (check-sat)
-(get-model)

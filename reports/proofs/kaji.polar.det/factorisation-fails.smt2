@@ -8,4 +8,3 @@
 (declare-const t Real)
 (assert (and (> x 0) (> y 0) (> (+ (* (- 1) h h) (* x y)) 0) (= (+ l1 l2 (* (- 1) x) (* (- 1) y)) 0) (= (+ (* h h) (* l1 l2) (* (- 1) x y)) 0) (not (= (+ (* (- 1) h h t t) (* (- 1) l1 l2 t t) (* (- 1) l1 t) (* l1 t t) (* (- 1) l2 t) (* l2 t t) (* t x) (* t y) (* (- 1) t t x) (* t t x y) (* (- 1) t t y)) 0))))
 (check-sat)
-(get-model)

@@ -8,4 +8,3 @@
 (declare-const tt1 Real)
 (assert (and (= (+ (- 3) (* r3 r3)) 0) (> r3 0) (or (and (>= t 0) (<= (+ (- 1) t) 0) (<= (+ 1 t) 0)) (and (>= ts 0) (<= (+ ts (* (- 1) tt)) 0) (<= (+ (- 1) tt) 0) (> (+ ts (* (- 1) tt)) 0) (>= ts1 0) (<= (+ ts1 (* (- 1) tt1)) 0) (<= (+ (- 1) tt1) 0) (< (+ ts1 (* (- 1) tt1)) 0)))))
 (check-sat)
-(get-model)

@@ -4,4 +4,3 @@
 (declare-const t Real)
 (assert (and (= (+ (- 3) (* r3 r3)) 0) (> r3 0) (>= t 0) (<= (+ (- 1) t) 0) (<= (+ 1 t) 0)))
 (check-sat)
-(get-model)

@@ -4,4 +4,3 @@
 (declare-const y Real)
 (assert (and (= (+ (* (- (/ 1 3)) x) (* (/ 4 3) x y) (* (- (/ 1 3)) x x) (* (- (/ 1 3)) y) (* (- (/ 1 3)) y y)) 0) (not (= (+ x (* (- 4) x y) (* x x) y (* y y)) 0))))
 (check-sat)
-(get-model)

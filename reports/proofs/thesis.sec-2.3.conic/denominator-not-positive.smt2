@@ -4,4 +4,3 @@
 (declare-const y Real)
 (assert (<= (+ 3 (* (- 2) x) (* 2 x y) (* x x) (* (- 2) y) (* y y)) 0))
 (check-sat)
-(get-model)

@@ -5,4 +5,3 @@
 (declare-const h Real)
 (assert (and (> x 0) (> y 0) (> (+ (* (- 1) h h) (* x y)) 0) (>= (+ 1 (* (- 1) h h) (* (- 1) x) (* x y) (* (- 1) y)) 0) (< (+ (- 2) x y) 0) (or (> (+ (- 1) x) 0) (> (+ (- 1) y) 0))))
 (check-sat)
-(get-model)

@@ -8,4 +8,3 @@
 (declare-const f Real)
 (assert (and (= (+ (* (/ 1 3) a b) (* (/ 1 3) a c) (* (- (/ 1 3)) a a) (* (/ 1 3) b c) (* (- (/ 1 3)) b b) (* (- (/ 1 3)) c c) (* (- 1) d d) (* (- 1) e e) (* (- 1) f f)) 0) (or (not (= (+ a (* (- 1) b)) 0)) (not (= (+ b (* (- 1) c)) 0)) (not (= d 0)) (not (= e 0)) (not (= f 0)))))
 (check-sat)
-(get-model)

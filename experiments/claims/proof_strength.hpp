@@ -1,0 +1,27 @@
+#pragma once
+// How strong a verdict its proof makes it (issue 17), computed from what the checkers answered, never stated by
+// hand: `proved` when every sentence and identity was answered by two independent checkers, `proved-one-decider`
+// when some sentence by one only, `proved-citing` when the method uses an external published theorem as a step
+// (experiments/proofs/citations.hpp); no strength when a sentence is unanswered, or when every sentence is
+// structural (empty for propositional reasons alone: no evidence for the claim) and nothing is cited.
+#include "experiments/claims/verdict.hpp"
+#include "experiments/proofs/proof.hpp"
+
+#include <optional>
+
+namespace affinterp::claims {
+
+inline std::optional<Strength> proof_strength(const proofs::Proof& proof) {
+  if (!proof.decided()) return std::nullopt;
+  // A cited theorem carries the step the sentences leave to it, structural residues included.
+  if (!proof.cites.empty()) return Strength::proved_citing;
+  if (!proof.has_content()) return std::nullopt;
+  return proof.decided_by_two() ? Strength::proved : Strength::proved_one_decider;
+}
+
+/// Whether `s` is one of the proved strengths.
+inline bool is_proved(Strength s) {
+  return s == Strength::proved || s == Strength::proved_one_decider || s == Strength::proved_citing;
+}
+
+}  // namespace affinterp::claims

@@ -1,0 +1,54 @@
+#include "experiments/claims/speed_verdict.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace affinterp::claims {
+
+namespace {
+
+nlohmann::json bound(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); }
+
+}  // namespace
+
+Verdict verdict_of(const Measured& m, Interval band) {
+  if (!m.ci95) return Verdict::inconclusive;
+  switch (bench::placement(*m.ci95, band)) {
+    case bench::Placement::inside:
+      return Verdict::reproduced;
+    case bench::Placement::outside:
+      return Verdict::not_reproduced;
+    case bench::Placement::straddles:
+      return Verdict::inconclusive;
+  }
+  return Verdict::inconclusive;
+}
+
+Verdict all_of(std::initializer_list<Verdict> verdicts) {
+  if (std::ranges::any_of(verdicts, [](Verdict v) { return v == Verdict::not_reproduced; }))
+    return Verdict::not_reproduced;
+  if (std::ranges::all_of(verdicts, [](Verdict v) { return v == Verdict::reproduced; })) return Verdict::reproduced;
+  return Verdict::inconclusive;
+}
+
+Verdict across_runs(std::span<const Verdict> runs) {
+  const auto any = [&](Verdict v) { return std::ranges::find(runs, v) != runs.end(); };
+  if (any(Verdict::reproduced) && any(Verdict::not_reproduced)) return Verdict::machine_dependent;
+  if (!runs.empty() && std::ranges::all_of(runs, [&](Verdict v) { return v == runs.front(); })) return runs.front();
+  return Verdict::inconclusive;
+}
+
+nlohmann::json to_json(const Measured& m, Interval band, std::string_view name) {
+  const std::string key(name);
+  return {
+      {key, m.value},
+      {key + "_ci95", m.ci95 ? nlohmann::json{m.ci95->lo, m.ci95->hi} : nlohmann::json()},
+      {"band", {bound(band.lo), bound(band.hi)}},
+      {"repetitions", m.repetitions},
+      {"processes", m.processes},
+      {"verdict", to_string(verdict_of(m, band))},
+  };
+}
+
+}  // namespace affinterp::claims

@@ -1,0 +1,45 @@
+#pragma once
+// The verdict on a measured figure (issue 11) and on the runs of its history (issue 21). One run: reproduced when
+// the figure's 95% bootstrap interval (experiments/bench/measured.hpp) lies in the band of values the claim's
+// wording allows, not-reproduced when it lies outside, inconclusive when it straddles an edge or when fewer than
+// kMinRepetitions repetitions were recorded. Several runs, each on its machine: across_runs.
+#include "experiments/bench/measured.hpp"
+#include "experiments/claims/verdict.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <initializer_list>
+#include <span>
+#include <string_view>
+
+namespace affinterp::claims {
+
+using bench::BenchResults;
+using bench::Interval;
+using bench::kUnbounded;
+using bench::Measured;
+using bench::measured_median;
+using bench::measured_ratio;
+
+/// reproduced / not-reproduced / inconclusive from where the interval lies against `band`.
+Verdict verdict_of(const Measured& m, Interval band);
+/// The verdict of several figures read together: reproduced if all are, not-reproduced if any is, else
+/// inconclusive.
+Verdict all_of(std::initializer_list<Verdict> verdicts);
+
+/// The rule across the recorded runs (reports/bench/history), as the report states it (kAcrossRunsRule): the
+/// verdict every run gives when they all give the same; machine-dependent when one run is reproduced and
+/// another not-reproduced; otherwise (the runs that decide agree, some do not decide) inconclusive, as is an
+/// empty history.
+Verdict across_runs(std::span<const Verdict> runs);
+inline constexpr std::string_view kAcrossRunsRule =
+    "each recorded run (reports/bench/history/, one entry per run of the benchmarks, machine named) is decided "
+    "alone by the interval rule; the claim is reproduced (not-reproduced) iff every run is, machine-dependent iff "
+    "at least one run is reproduced and another not-reproduced, else inconclusive (some runs undecided, none "
+    "contradicting another)";
+
+/// {"ratio" (or `name`), "ratio_ci95": [lo, hi] (null without enough repetitions), "band": [lo, hi] (null for
+/// an unbounded side), "repetitions", "processes", "verdict"}.
+nlohmann::json to_json(const Measured& m, Interval band, std::string_view name = "ratio");
+
+}  // namespace affinterp::claims

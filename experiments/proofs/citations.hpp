@@ -1,0 +1,19 @@
+#pragma once
+// The external published theorems a proof uses as a step (Proof::cites, strength "proved, citing"), with their
+// full references. Every other step is a decided sentence, a stored identity or a lemma written out in
+// reports/proofs/LEMMAS.md.
+#include <string_view>
+
+namespace affinterp::proofs::citations {
+
+/// Lemma L8 (level N of Def 2.2.2): for real quadratic forms P, Q on ℝ² with no v such that P(v) < 0 < Q(v),
+/// Q ⪯ 0 or P − νQ ⪰ 0 for some ν ≥ 0.
+inline constexpr std::string_view dines =
+    "Dines' theorem: L. L. Dines, On the mapping of quadratic forms, Bull. Amer. Math. Soc. 47 (1941) 494-498";
+
+/// Lemma L10 (the exp-log homotopy): t ↦ c^t = exp(t log c) is positive, and strictly monotone unless c = 1.
+inline constexpr std::string_view exponential =
+    "the real exponential is positive and strictly increasing: W. Rudin, Principles of Mathematical Analysis, "
+    "3rd ed., McGraw-Hill 1976, Theorem 8.6";
+
+}  // namespace affinterp::proofs::citations

@@ -1,0 +1,68 @@
+#include "theory/global/simplicial_factor.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace affinterp::global {
+
+template <class Scalar>
+SimplicialFactor<Scalar>::CopyableLDLT::CopyableLDLT(const CopyableLDLT& other)
+    : Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>() {
+  this->m_info = other.m_info;
+  this->m_factorizationIsOk = other.m_factorizationIsOk;
+  this->m_analysisIsOk = other.m_analysisIsOk;
+  this->m_matrix = other.m_matrix;
+  this->m_diag = other.m_diag;
+  this->m_parent = other.m_parent;
+  this->m_nonZerosPerCol = other.m_nonZerosPerCol;
+  this->m_P = other.m_P;
+  this->m_Pinv = other.m_Pinv;
+  this->m_shiftOffset = other.m_shiftOffset;
+  this->m_shiftScale = other.m_shiftScale;
+}
+
+template <class Scalar>
+void SimplicialFactor<Scalar>::analyse(const SparseMatrix& K) {
+  ldlt_.analyzePattern(K);
+}
+
+template <class Scalar>
+bool SimplicialFactor<Scalar>::factorise(const SparseMatrix& K) {
+  ldlt_.factorize(K);
+  double smallest = std::numeric_limits<double>::infinity(), largest = 0;
+  for (const Scalar& pivot : ldlt_.vectorD())  // real: D of an LDLᴴ factorisation
+    smallest = std::min(smallest, std::real(pivot)), largest = std::max(largest, std::abs(pivot));
+  // a zero pivot (Eigen's NumericalIssue) fails the ratio too; info() is not read since a copy (clone()) cannot
+  // set the flag it asserts
+  return smallest > 1e-12 * largest && std::isfinite(largest);
+}
+
+template <class Scalar>
+void SimplicialFactor<Scalar>::solve_in_place(Block& X) const {
+  const SparseMatrix& L = ldlt_.matrixL().nestedExpression();  // unit lower triangle, diagonal not stored
+  Block Y = ldlt_.permutationP() * X;
+  for (Eigen::Index j = 0; j < L.outerSize(); ++j)  // L y = P x
+    for (typename SparseMatrix::InnerIterator it(L, j); it; ++it) Y.row(it.index()) -= it.value() * Y.row(j);
+  Y.array().colwise() /= ldlt_.vectorD().array();
+  for (Eigen::Index j = L.outerSize() - 1; j >= 0; --j)  // Lᴴ w = D⁻¹ y
+    for (typename SparseMatrix::InnerIterator it(L, j); it; ++it)
+      Y.row(j) -= Eigen::numext::conj(it.value()) * Y.row(it.index());
+  X = ldlt_.permutationPinv() * Y;
+}
+
+template <class Scalar>
+std::unique_ptr<SparseFactor<Scalar>> SimplicialFactor<Scalar>::clone() const {
+  return std::make_unique<SimplicialFactor>(*this);
+}
+
+template <class Scalar>
+double SimplicialFactor<Scalar>::factor_bytes() const {
+  const SparseMatrix& L = ldlt_.matrixL().nestedExpression();
+  return static_cast<double>(L.nonZeros()) * static_cast<double>(sizeof(Scalar) + sizeof(int));
+}
+
+template class SimplicialFactor<double>;
+template class SimplicialFactor<std::complex<double>>;
+
+}  // namespace affinterp::global
