@@ -2,6 +2,7 @@
 // (Def 2.2.2)? Decided for all reals by QEPCAD B and Z3, as `affinterp decide --json`
 // (experiments/proofs/decide_condition.hpp).
 #include "experiments/proofs/decide_condition.hpp"
+#include "experiments/python/arrays.hpp"
 #include "experiments/python/bindings.hpp"
 #include "theory/logic/condition_parser.hpp"
 

@@ -6,6 +6,8 @@
 #include "theory/global/local_paths.hpp"
 #include "theory/local/goodness.hpp"
 
+#include <Eigen/LU>  // MatrixBase::determinant
+
 #include <sstream>
 
 namespace affinterp::python {
