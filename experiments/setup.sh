@@ -16,6 +16,7 @@ packages=(
   libflint-arb-dev
   qepcad z3 libz3-dev cvc5 libssl-dev
   clang libclang-rt-14-dev clang-format
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -120,10 +120,10 @@ TEST(MeshFile, ChoosesTheFormatByExtensionAndNamesMissingFiles) {
   EXPECT_EQ(io::read_mesh(off).triangle_count(), 1);
   EXPECT_THROW(io::read_mesh("/nonexistent/a.obj"), io::MeshFileError);
   try {
-    io::read_mesh("shape.stl");
+    io::read_mesh("shape.xyz");
     FAIL();
   } catch (const io::MeshFileError& e) {
-    EXPECT_STREQ(e.what(), "shape.stl: unknown extension '.stl': expected .obj or .off");
+    EXPECT_STREQ(e.what(), "shape.xyz: unknown extension '.xyz': expected .obj, .off, .ply, .stl or .ts");
   }
 }
 

@@ -16,6 +16,7 @@ declare -A allowed=(
   [experiments/bench]="experiments/support experiments/bench"
   [experiments/proofs]="theory experiments/support experiments/proofs"
   [experiments/claims]="theory reports plots experiments/support experiments/inputs experiments/bench experiments/proofs experiments/claims"
+  [experiments/python]="theory experiments/support experiments/inputs experiments/proofs experiments/python"
   [experiments/apps]="theory reports plots experiments/support experiments/inputs experiments/bench experiments/proofs experiments/claims experiments/apps"
 )
 

@@ -1,5 +1,7 @@
 #include "experiments/inputs/mesh_file.hpp"
 
+#include "experiments/inputs/polygon_soup_file.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -285,8 +287,9 @@ global::Mesh read_mesh(const fs::path& file) {
   std::string extension = file.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (is_polygon_soup_extension(extension)) return read_polygon_soup_mesh(file);
   if (extension != ".obj" && extension != ".off")
-    throw MeshFileError(name + ": unknown extension '" + extension + "': expected .obj or .off");
+    throw MeshFileError(name + ": unknown extension '" + extension + "': expected .obj, .off, .ply, .stl or .ts");
   const std::string text = file_text(file);
   return extension == ".obj" ? parse_obj(text, name) : parse_off(text, name);
 }

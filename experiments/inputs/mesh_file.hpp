@@ -37,7 +37,8 @@ global::Mesh parse_obj(std::string_view text, const std::string& name);
 /// Parses OFF text; `name` prefixes error messages.
 global::Mesh parse_off(std::string_view text, const std::string& name);
 
-/// Reads `file` as OBJ (.obj) or OFF (.off), by its extension (case-insensitive).
+/// Reads `file` as OBJ (.obj) or OFF (.off), by its extension (case-insensitive); .ply, .stl and .ts through
+/// CGAL's polygon-soup reader (polygon_soup_file.hpp).
 global::Mesh read_mesh(const std::filesystem::path& file);
 
 /// Parses OFF text as a 3D surface; `name` prefixes error messages.

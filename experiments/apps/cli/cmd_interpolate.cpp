@@ -3,6 +3,7 @@
 #include "experiments/apps/cli/command.hpp"
 #include "experiments/inputs/constraint_spec.hpp"
 #include "experiments/inputs/frames_npy.hpp"
+#include "experiments/inputs/interpolation_request.hpp"
 #include "experiments/inputs/mesh_file.hpp"
 #include "experiments/inputs/mesh_pair.hpp"
 #include "experiments/support/progress.hpp"
@@ -10,7 +11,6 @@
 #include "plots/mesh_animation.hpp"
 #include "plots/mesh_strip.hpp"
 #include "plots/viewer.hpp"
-#include "theory/global/gauge.hpp"
 #include "theory/global/interpolation.hpp"
 #include "theory/global/mesh_validation.hpp"
 #include "theory/global/metrics.hpp"
@@ -46,15 +46,9 @@ std::string default_time_range() {
 struct InterpolateOptions {
   std::string source, target, out;
   int frames = 30;
-  std::string local = global::to_string(engine_defaults.homotopy), energy = global::to_string(engine_defaults.energy),
-              rotation_branch = global::to_string(engine_defaults.rotation_branch);
-  double blend_weight = engine_defaults.blend_weight;
+  io::InterpolationRequest engine;  ///< the engine's options and their defaults, shared with the Python module
   std::string weights_file;
-  bool area_weights = engine_defaults.area_weighted, symmetric = engine_defaults.symmetric,
-       allow_flipped_target = false, figures = true;
-  std::vector<std::string> pins, loci, edges;
-  /// The gauge of translation: a CLI choice, as the engine's Constraints are what its caller asks for.
-  std::string barycentre = "linear";
+  bool allow_flipped_target = false, figures = true;
   std::string time_range = default_time_range();
   std::optional<std::string> times;  ///< --times T1,T2,...: exactly these frames (not with --frames, --time-range)
   std::string format = "obj";        ///< frame files: obj (one per frame) or npy (frames.npy, all of them)
@@ -103,36 +97,25 @@ std::vector<double> frame_times(const InterpolateOptions& o) {
 
 global::InterpolationOptions engine_options(const InterpolateOptions& o, const io::MeshPair& pair,
                                             const std::vector<double>& times) {
-  global::InterpolationOptions options;
-  try {
-    options.homotopy = global::parse_local_homotopy(o.local);
-    options.energy = global::parse_energy(o.energy);
-    options.rotation_branch = global::parse_rotation_branch(o.rotation_branch);
-    options.blend_weight = o.blend_weight;
-    options.area_weighted = o.area_weights;
-    options.symmetric = o.symmetric;
-    for (const auto& spec : o.pins) options.constraints.pinned.push_back(io::parse_pin(spec));
-    for (const auto& spec : o.loci) options.constraints.loci.push_back(io::parse_locus(spec));
-    for (const auto& spec : o.edges) options.constraints.edges.push_back(io::parse_edge_direction(spec));
-    options.constraints.barycentre = io::parse_barycentre(o.barycentre);
-    io::check_constraint_vertices(options.constraints, pair.source.vertex_count());
-  } catch (const std::invalid_argument& e) {
-    throw CommandFailed(e.what(), usage_error);
-  }
+  io::InterpolationRequest request = o.engine;
   if (!o.weights_file.empty()) {
     try {
-      options.blend_weights = io::read_weights(o.weights_file);
+      request.blend_weights = io::read_weights(o.weights_file);
     } catch (const io::MeshFileError& e) {
       throw CommandFailed(e.what(), 1);
     }
-    if (options.blend_weights.size() != pair.source.triangle_count())
-      throw CommandFailed(o.weights_file + ": " + std::to_string(options.blend_weights.size()) + " weights for " +
+    if (request.blend_weights.size() != pair.source.triangle_count())
+      throw CommandFailed(o.weights_file + ": " + std::to_string(request.blend_weights.size()) + " weights for " +
                               std::to_string(pair.source.triangle_count()) + " triangles (one w_i per line)",
                           1);
   }
   const auto [first, last] = std::minmax_element(times.begin(), times.end());
-  options.t_begin = *first, options.t_end = *last;
-  return options;
+  request.t_begin = *first, request.t_end = *last;
+  try {
+    return io::interpolation_options(request, pair.source, pair.target);
+  } catch (const std::invalid_argument& e) {
+    throw CommandFailed(e.what(), usage_error);
+  }
 }
 
 /// A number for JSON: null when not finite (a singular B_i gives σ1/σ2 = +∞).
@@ -186,9 +169,8 @@ void run(const InterpolateOptions& o) {
   if (!pair.flipped_target_triangles.empty())
     std::cerr << "note: " << pair.flipped_target_triangles.size() << " target triangle(s) flipped (allowed)\n";
 
-  global::InterpolationOptions options = engine_options(o, pair, times);
-  const auto default_edge = global::default_edge_direction(pair.source, pair.target, options);
-  if (default_edge) options.constraints.edges.push_back(*default_edge);
+  const global::InterpolationOptions options = engine_options(o, pair, times);
+  const bool default_edge = options.constraints.edges.size() > o.engine.edges.size();
   std::unique_ptr<global::Interpolation> interpolation;
   try {
     interpolation = std::make_unique<global::Interpolation>(pair.source, pair.target, options);
@@ -199,12 +181,12 @@ void run(const InterpolateOptions& o) {
   StagedOutput staged(o.out);
   nlohmann::json frames = nlohmann::json::array();
   const std::string title = fs::path(o.source).filename().string() + " -> " + fs::path(o.target).filename().string() +
-                            " (" + o.local + ", E^" + o.energy + ")";
+                            " (" + o.engine.local + ", E^" + o.engine.energy + ")";
   plots::ViewerRun run{title, pair.source, {}, {}, {}, {}};
   const bool long_run = static_cast<double>(frame_count) * static_cast<double>(pair.source.triangle_count()) > 2e5;
   std::optional<Progress> progress;  // the frames, then the filmstrip, the GIF and the viewer
   if (long_run) progress.emplace("interpolate", static_cast<std::size_t>(frame_count) + (o.figures ? 3 : 0));
-  const std::string energy_name = "E^" + o.energy + (o.symmetric ? " symmetrised" : "");
+  const std::string energy_name = "E^" + o.engine.energy + (o.engine.symmetric ? " symmetrised" : "");
   std::vector<plots::FrameSeries> energy_series = {{energy_name, {}}};  // then the parts, as `view` reads them
   global::Mesh frame = pair.source;  // frames keep the files' face list, clockwise ones included
   if (pair.reoriented) global::reverse_orientation(frame);
@@ -260,24 +242,24 @@ void run(const InterpolateOptions& o) {
                              {"reoriented", pair.reoriented},
                              {"flipped_target_triangles", pair.flipped_target_triangles},
                              {"options",
-                              {{"local", o.local},
-                               {"energy", o.energy},
-                               {"rotation_branch", o.rotation_branch},
-                               {"area_weights", o.area_weights},
-                               {"symmetric", o.symmetric},
-                               {"blend_weight", o.blend_weight},
+                              {{"local", o.engine.local},
+                               {"energy", o.engine.energy},
+                               {"rotation_branch", o.engine.rotation_branch},
+                               {"area_weights", o.engine.area_weights},
+                               {"symmetric", o.engine.symmetric},
+                               {"blend_weight", o.engine.blend_weight},
                                {"weights_file", o.weights_file},
-                               {"pins", o.pins},
-                               {"loci", o.loci},
-                               {"edge_directions", o.edges},
-                               {"barycentre_locus", o.barycentre},
+                               {"pins", o.engine.pins},
+                               {"loci", o.engine.loci},
+                               {"edge_directions", o.engine.edges},
+                               {"barycentre_locus", o.engine.barycentre},
                                {"time_range", {options.t_begin, options.t_end}},
                                {"format", o.format},
                                {"times", o.times ? nlohmann::json(times) : nlohmann::json(nullptr)}}},
                              {"frames", frames}};
   if (default_edge)
     document["options"]["default_edge_direction"] =
-        std::to_string(default_edge->i) + ":" + std::to_string(default_edge->j);
+        std::to_string(options.constraints.edges.back().i) + ":" + std::to_string(options.constraints.edges.back().j);
   if (o.figures) {
     run.energy = std::move(energy_series);
     std::vector<plots::MeshFrame> drawn, strip;
@@ -329,40 +311,39 @@ void add_interpolate_command(CLI::App& app) {
       "zero-area "
       "source triangles and flipped target triangles (unless allowed) are refused. On any error OUT keeps its earlier "
       "content.");
-  cmd->add_option("--source", o->source, "Source mesh (.obj or .off; z must be 0)")->required();
+  cmd->add_option("--source", o->source, "Source mesh (.obj, .off, .ply, .stl or .ts; z must be 0)")->required();
   cmd->add_option("--target", o->target, "Target mesh with the same triangles")->required();
   cmd->add_option("--out", o->out, "Output folder")->required();
   CLI::Option* frames =
       cmd->add_option("--frames", o->frames, "Number of frames N (t = T0 + k (T1-T0)/(N-1))")->capture_default_str();
-  cmd->add_option("--local", o->local, "Local homotopy A_i(t): exp (R^t S^t, eq. 3), polar (eq. 2), linear, svd")
+  cmd->add_option("--local", o->engine.local, "Local homotopy A_i(t): exp (R^t S^t, eq. 3), polar (eq. 2), linear, svd")
       ->check(CLI::IsMember({"exp", "polar", "linear", "svd"}))
       ->capture_default_str();
-  cmd->add_option("--energy", o->energy, "Local error E_i: F (Frobenius), S (similarity of points), R (eq. 4), blend")
+  cmd->add_option("--energy", o->engine.energy,
+                  "Local error E_i: F (Frobenius), S (similarity of points), R (eq. 4), blend")
       ->check(CLI::IsMember({"F", "S", "R", "blend"}))
       ->capture_default_str();
-  cmd->add_option("--rotation-branch", o->rotation_branch,
+  cmd->add_option("--rotation-branch", o->engine.rotation_branch,
                   "Polar angles: consistent (chosen across neighbours, may exceed pi) or principal (-pi, pi]")
       ->check(CLI::IsMember({"consistent", "principal"}))
       ->capture_default_str();
-  cmd->add_option("--blend-weight", o->blend_weight, "w in w E^F + (1-w) E^R for --energy blend")
+  cmd->add_option("--blend-weight", o->engine.blend_weight, "w in w E^F + (1-w) E^R for --energy blend")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   cmd->add_option("--weights", o->weights_file,
                   "File of per-triangle blend weights w_i, one per line (--energy blend)");
-  cmd->add_flag(
-      "--area-weights,!--no-area-weights", o->area_weights,
-      std::string("Weight each E_i by its source triangle's area (Kaji, Improvements; ") +
-          (engine_defaults.area_weighted ? "the default; --no-area-weights: plain sum)" : "default: plain sum)"));
-  cmd->add_flag("--symmetric", o->symmetric, "Symmetric energy E(t) + E^-1(1-t)");
-  cmd->add_option("--pin", o->pins, "V[@C]: vertex V moves on the straight line p_V -> q_V (repeatable)");
-  cmd->add_option("--locus", o->loci,
+  cmd->add_flag("--area-weights,!--no-area-weights", o->engine.area_weights,
+                "Weight each E_i by its source triangle's area (default; --no-area-weights: plain sum)");
+  cmd->add_flag("--symmetric", o->engine.symmetric, "Symmetric energy E(t) + E^-1(1-t)");
+  cmd->add_option("--pin", o->engine.pins, "V[@C]: vertex V moves on the straight line p_V -> q_V (repeatable)");
+  cmd->add_option("--locus", o->engine.loci,
                   "V[@C]:x1,y1;x2,y2;...: vertex V follows the spline through the points at t = 0..1 (repeatable)");
   cmd->add_option(
-      "--edge-direction", o->edges,
+      "--edge-direction", o->engine.edges,
       "I:J[:homotopy|linear][@C]: edge v_I - v_J follows the local homotopy (default) or the straight path. "
       "With E^S, E^R or blend and no --pin/--locus/--edge-direction, one edge of the source triangle nearest "
       "the barycentre follows its local homotopy (fixes rotation and scale; listed in metrics.json)");
-  cmd->add_option("--barycentre-locus", o->barycentre,
+  cmd->add_option("--barycentre-locus", o->engine.barycentre,
                   "linear[@C] | none | x1,y1;x2,y2;...[@C]: the barycentre's path (linear: source to target)")
       ->capture_default_str();
   CLI::Option* time_range = cmd->add_option("--time-range", o->time_range,

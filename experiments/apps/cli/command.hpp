@@ -26,5 +26,6 @@ void add_view_command(CLI::App& app);
 void add_decide_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 void add_prove_command(CLI::App& app);
+void add_pair_command(CLI::App& app);
 
 }  // namespace affinterp::cli

@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
       "affinterp: decide the claims of Kaji et al. (SCA 2012) and Matsushita (thesis 2015) on rigid 2D "
       "shape interpolation with affine maps, and run their algorithms.",
       "affinterp"};
+  app.set_version_flag("--version", std::string("affinterp ") + AFFINTERP_VERSION);
   app.require_subcommand(1);
   add_claims_command(app);
   add_report_command(app);
@@ -22,12 +23,15 @@ int main(int argc, char** argv) {
   add_decide_command(app);
   add_bench_command(app);
   add_prove_command(app);
+  add_pair_command(app);
 
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::cerr << "affinterp: " << e.what() << " (see --help)\n";
