@@ -21,7 +21,8 @@ struct InterpolationRequest {
               rotation_branch = global::to_string(global::InterpolationOptions{}.rotation_branch);
   double blend_weight = global::InterpolationOptions{}.blend_weight;
   Eigen::VectorXd blend_weights;  ///< w_i per triangle; empty: blend_weight for every triangle
-  bool area_weights = global::InterpolationOptions{}.area_weighted, symmetric = global::InterpolationOptions{}.symmetric;
+  bool area_weights = global::InterpolationOptions{}.area_weighted,
+       symmetric = global::InterpolationOptions{}.symmetric;
   std::vector<std::string> pins, loci, edges;
   /// The gauge of translation: a request's choice, as the engine's Constraints are what its caller asks for.
   std::string barycentre = "linear";
