@@ -19,7 +19,7 @@ function(affinterp_add_portable_copy target)
   set_target_properties(${copy} PROPERTIES OUTPUT_NAME ${output_name}
                         ARCHIVE_OUTPUT_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/portable)
   # Everything else is the original's, set here rather than inherited from this folder.
-  foreach(property COMPILE_OPTIONS COMPILE_DEFINITIONS COMPILE_FEATURES INCLUDE_DIRECTORIES LINK_LIBRARIES
+  foreach(property COMPILE_OPTIONS COMPILE_DEFINITIONS COMPILE_FEATURES INCLUDE_DIRECTORIES LINK_LIBRARIES PRECOMPILE_HEADERS
                    INTERFACE_COMPILE_OPTIONS INTERFACE_COMPILE_DEFINITIONS INTERFACE_COMPILE_FEATURES
                    INTERFACE_INCLUDE_DIRECTORIES INTERFACE_LINK_LIBRARIES EXPORT_NAME)
     get_target_property(value ${target} ${property})
