@@ -14,7 +14,7 @@ packages=(
   libcgal-dev libcgal-demo libxsimd-dev
   libginac-dev ginac-tools
   libflint-arb-dev
-  qepcad z3 libz3-dev cvc5 libssl-dev
+  qepcad z3 cvc5 libssl-dev
   clang libclang-rt-14-dev clang-format
   pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
 )
