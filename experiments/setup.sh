@@ -4,9 +4,13 @@
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
+# libopenblas0-pthread: CHOLMOD's BLAS and LAPACK, through the libblas.so.3 / liblapack.so.3 alternatives
+# (Debian's default is the reference BLAS, 2-3x slower in the supernodal factorisation at 1M triangles). The
+# threaded build, as the engine factorises frames on several threads at once: Debian's serial OpenBLAS is
+# not safe to call concurrently (it returned wrong factors, theory/global/sparse_factor.hpp).
 packages=(
   cmake g++ make ninja-build pkg-config
-  libeigen3-dev libsuitesparse-dev libboost-dev libboost-iostreams-dev libboost-filesystem-dev
+  libeigen3-dev libsuitesparse-dev libopenblas0-pthread libboost-dev libboost-iostreams-dev libboost-filesystem-dev
   libgtest-dev googletest librapidcheck-dev libbenchmark-dev
   libgnuplot-iostream-dev gnuplot-nox fonts-dejavu-core
   libcairo2-dev libgif-dev chromium

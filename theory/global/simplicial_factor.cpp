@@ -38,16 +38,44 @@ bool SimplicialFactor<Scalar>::factorise(const SparseMatrix& K) {
   return smallest > 1e-12 * largest && std::isfinite(largest);
 }
 
+namespace {
+
+/// L D Lᴴ y = x in place on the rows of Y (n × columns, row-major): forward over L's columns, the diagonal,
+/// backward. `columns` is a template argument for the frames' one and two right-hand sides, so that the
+/// inner loops over a row are unrolled; 0 is any count, read from Y.
+template <int columns, class Scalar, class Block>
+void substitute(const Eigen::SparseMatrix<Scalar>& L, const Eigen::Matrix<Scalar, Eigen::Dynamic, 1>& D, Block& Y) {
+  const Eigen::Index m = columns > 0 ? columns : Y.cols();
+  Scalar* y = Y.data();
+  const int* start = L.outerIndexPtr();
+  const int* row = L.innerIndexPtr();
+  const Scalar* value = L.valuePtr();
+  for (Eigen::Index j = 0; j < L.outerSize(); ++j) {  // L y = P x
+    const Scalar* y_j = y + j * m;
+    for (int s = start[j]; s < start[j + 1]; ++s)
+      for (Eigen::Index c = 0; c < m; ++c) y[row[s] * m + c] -= value[s] * y_j[c];
+  }
+  for (Eigen::Index j = 0; j < L.outerSize(); ++j)
+    for (Eigen::Index c = 0; c < m; ++c) y[j * m + c] /= D[j];
+  for (Eigen::Index j = L.outerSize() - 1; j >= 0; --j) {  // Lᴴ w = D⁻¹ y
+    Scalar* y_j = y + j * m;
+    for (int s = start[j]; s < start[j + 1]; ++s)
+      for (Eigen::Index c = 0; c < m; ++c) y_j[c] -= Eigen::numext::conj(value[s]) * y[row[s] * m + c];
+  }
+}
+
+}  // namespace
+
 template <class Scalar>
 void SimplicialFactor<Scalar>::solve_in_place(Block& X) const {
   const SparseMatrix& L = ldlt_.matrixL().nestedExpression();  // unit lower triangle, diagonal not stored
   Block Y = ldlt_.permutationP() * X;
-  for (Eigen::Index j = 0; j < L.outerSize(); ++j)  // L y = P x
-    for (typename SparseMatrix::InnerIterator it(L, j); it; ++it) Y.row(it.index()) -= it.value() * Y.row(j);
-  Y.array().colwise() /= ldlt_.vectorD().array();
-  for (Eigen::Index j = L.outerSize() - 1; j >= 0; --j)  // Lᴴ w = D⁻¹ y
-    for (typename SparseMatrix::InnerIterator it(L, j); it; ++it)
-      Y.row(j) -= Eigen::numext::conj(it.value()) * Y.row(it.index());
+  if (Y.cols() == 1)
+    substitute<1>(L, ldlt_.vectorD(), Y);
+  else if (Y.cols() == 2)
+    substitute<2>(L, ldlt_.vectorD(), Y);
+  else
+    substitute<0>(L, ldlt_.vectorD(), Y);
   X = ldlt_.permutationPinv() * Y;
 }
 
