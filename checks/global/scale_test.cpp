@@ -9,8 +9,6 @@
 
 #include <Eigen/Dense>
 
-#include <numbers>
-#include <utility>
 #include <vector>
 
 namespace affinterp::global {
@@ -87,37 +85,6 @@ TEST(Scale, BatchFramesAreTheFramesOneByOne) {
   const Interpolation interpolation(s.source, s.target, cli_options(Energy::similarity, s));
   EXPECT_THROW(interpolation.vertices_at(std::vector<double>{0.5, 1.5}), std::out_of_range);
   EXPECT_TRUE(interpolation.vertices_at(std::vector<double>{}).empty());
-}
-
-/// Issue 19's strip at `cols` × `rows` quads rolled `turn` radians, width outwards (as testing::spiral).
-Spiral rolled(int cols, int rows, double turn) {
-  Spiral s = spiral(cols, rows);
-  Mesh inner = s.source;
-  inner.vertices.row(1).array() -= 2;
-  s.target = testing::bent(inner, turn);
-  return s;
-}
-
-// The preconditioned frames (FrameSolver::preconditioned: conjugate gradients from the previous frame,
-// preconditioned by an earlier frame's factor) are the direct ones to 1e-9 of the bounding box, on the spiral
-// (rotations to 3π, the width stretched up to 2) and on the strip rolled 2.5 turns (5π, up to 2.7), frame
-// after frame and in a batch.
-TEST(Scale, PreconditionedFramesAreTheDirectOnes) {
-  for (const double turn : {3 * std::numbers::pi, 5 * std::numbers::pi}) {
-    const Spiral s = rolled(60, 8, turn);
-    const double box = box_size(s.source, s.target);
-    InterpolationOptions direct_options = cli_options(Energy::similarity, s), options = direct_options;
-    options.frame_solver = FrameSolver::preconditioned;
-    const Interpolation direct(s.source, s.target, direct_options), preconditioned(s.source, s.target, options);
-    std::vector<double> times;
-    for (int k = 0; k <= 30; ++k) times.push_back(k / 30.0);
-    for (const double t : times)
-      EXPECT_LT((preconditioned.vertices_at(t) - direct.vertices_at(t)).cwiseAbs().maxCoeff(), 1e-9 * box)
-          << "turn " << turn << " t " << t;
-    const std::vector<Eigen::Matrix2Xd> batch = preconditioned.vertices_at(times);
-    for (std::size_t k = 0; k < times.size(); ++k)
-      EXPECT_LT((batch[k] - direct.vertices_at(times[k])).cwiseAbs().maxCoeff(), 1e-9 * box) << "turn " << turn;
-  }
 }
 
 /// A 2D grid Laplacian plus a diagonal shift (Hermitian positive definite), lower triangle, with complex

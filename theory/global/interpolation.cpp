@@ -67,11 +67,6 @@ bool has_frobenius_part(const InterpolationOptions& options) {
   return options.blend_weights.size() > 0 ? (options.blend_weights.array() > 0).any() : options.blend_weight > 0;
 }
 
-/// A frame that takes more iterations than this refactorises its workspace at its own G(t): the preconditioner
-/// of the frames after it.
-constexpr int refactor_after_iterations = 8;
-/// The iterations' stopping test and limit; a frame that does not converge within it is solved directly.
-constexpr CgLimits frame_iterations{1e-11, 30};
 /// The factors of the batch call's workspaces together stay within this many bytes (a 1M-triangle mesh's
 /// batch within 2 GB: bench_scale).
 constexpr double workspace_bytes = 1.25 * 1073741824.0;
@@ -86,22 +81,21 @@ struct Interpolation::Engine {
   std::optional<FrameAssembly> assembly;
   /// H = L real and fixed: factored once, x and y solved as two real columns.
   SparseMinimiser<double> fixed;
-  /// H(t) complex Hermitian: its values refilled per frame in a workspace, its pattern analysed once, and
-  /// either refactorised per frame or solved iteratively with the workspace's last factor as preconditioner.
+  /// H(t) complex Hermitian: its values refilled and refactorised per frame in a workspace, its pattern
+  /// analysed once.
   struct Workspace {
     FrameAssembly::SparseMatrix H;
     SparseMinimiser<std::complex<double>> minimiser;
-    std::optional<Eigen::VectorXcd> previous;  ///< the last frame's z: the next frame's first guess
-    std::mutex mutex;                          ///< held by the one call computing frames in it
+    std::mutex mutex;  ///< held by the one call computing a frame in it
     Workspace(FrameAssembly::SparseMatrix matrix, SparseMinimiser<std::complex<double>> factored)
         : H(std::move(matrix)), minimiser(std::move(factored)) {}
-    Workspace(const Workspace& other) : H(other.H), minimiser(other.minimiser), previous(other.previous) {}
+    Workspace(const Workspace& other) : H(other.H), minimiser(other.minimiser) {}
   };
-  /// The frames' workspaces: [0] that of vertices_at(t), [0, W) those of the batch call's W workers. They
-  /// are the only state a frame changes, hence mutable; each is guarded by its mutex, the list by its own.
+  /// The frames' workspaces: [0] that of vertices_at(t), [0, W) those of the batch call's W workers, kept
+  /// for the next batch. They are the only state a frame changes, hence mutable; each is guarded by its
+  /// mutex, the list by its own.
   mutable std::vector<std::unique_ptr<Workspace>> workspaces;
   mutable std::mutex workspaces_mutex;
-  bool preconditioned = false;  ///< FrameSolver::preconditioned
 
   /// v(t) at a t in range, when H is fixed: L [x y] = [Re b, Im b], both columns in one solve; the
   /// right-hand side on `threads` threads.
@@ -111,25 +105,11 @@ struct Interpolation::Engine {
     xy << b.real(), b.imag();
     return fixed.solve(xy).transpose();
   }
-  /// v(t) at a t in range, when H(t) changes with A_i(t), in `work`: a numeric factorisation per frame, or
-  /// the conjugate gradient iterations from the workspace's last frame, refactorising when they pass
-  /// refactor_after_iterations and falling back to the factorisation when they do not converge.
+  /// v(t) at a t in range, when H(t) changes with A_i(t): a numeric factorisation per frame in `work`.
   Eigen::Matrix2Xd frame_in(Workspace& work, double t) const {
     assembly->matrix_at(t, work.H);
-    const Eigen::VectorXcd b = assembly->right_hand_side_at(t);
-    Eigen::VectorXcd z;
-    bool solved = false;
-    if (preconditioned) {
-      z = work.previous ? *work.previous : Eigen::VectorXcd::Zero(b.size());
-      const CgOutcome outcome = work.minimiser.solve_near(work.H, b, z, frame_iterations);
-      solved = outcome.converged;
-      if (solved && outcome.iterations > refactor_after_iterations) work.minimiser.factorise(work.H);
-    }
-    if (!solved) {
-      work.minimiser.factorise(work.H);
-      z = work.minimiser.solve(b);
-    }
-    if (preconditioned) work.previous = z;
+    work.minimiser.factorise(work.H);
+    const Eigen::VectorXcd z = work.minimiser.solve(assembly->right_hand_side_at(t));
     Eigen::Matrix2Xd v(2, z.size());
     v << z.real().transpose(), z.imag().transpose();  // z_k = v_kx + i v_ky
     return v;
@@ -173,7 +153,6 @@ struct Interpolation::Engine {
       SparseMinimiser<std::complex<double>> minimiser;
       analyse(minimiser, H);
       minimiser.factorise(H);
-      preconditioned = options.frame_solver == FrameSolver::preconditioned;
       workspaces.push_back(std::make_unique<Workspace>(std::move(H), std::move(minimiser)));
     }
   }
@@ -217,22 +196,19 @@ std::vector<Eigen::Matrix2Xd> Interpolation::vertices_at(const std::vector<doubl
     workers = std::min(workers, static_cast<std::size_t>(std::max(1.0, std::floor(workspace_bytes / bytes))));
     engine.reserve_workspaces(workers);
   }
-  std::atomic<bool> stop{false};
+  std::atomic<std::size_t> next{0};
   std::exception_ptr failure;
   std::mutex failure_mutex;
-  // Worker w computes the w-th of `workers` contiguous runs of the times, in its own workspace, so that each
-  // frame's iterations start from a near one.
-  auto work = [&](std::size_t w) {
+  auto work = [&](std::size_t w) {  // worker w takes the next frame, in workspace w
     try {
-      const std::size_t first = times.size() * w / workers, last = times.size() * (w + 1) / workers;
       std::unique_lock<std::mutex> lock;
       if (!isotropic) lock = std::unique_lock(engine.workspaces[w]->mutex);
-      for (std::size_t k = first; k < last && !stop; ++k)
+      for (std::size_t k; (k = next++) < times.size();)
         frames[k] = isotropic ? engine.isotropic_frame(times[k], 1) : engine.frame_in(*engine.workspaces[w], times[k]);
     } catch (...) {
       const std::lock_guard lock(failure_mutex);
       if (!failure) failure = std::current_exception();
-      stop = true;
+      next = times.size();
     }
   };
   std::vector<std::thread> threads;

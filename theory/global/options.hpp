@@ -80,12 +80,6 @@ enum class SparseBackEnd {
   cholmod,     ///< CHOLMOD's supernodal LLᴴ (when built in)
 };
 
-/// How a frame is solved when G(t) changes with t (E^R, E^S, a blend with some w_i < 1; interpolation.hpp).
-enum class FrameSolver {
-  direct,          ///< a numeric factorisation of G(t) per frame
-  preconditioned,  ///< conjugate gradients preconditioned by an earlier frame's factor, refactorised as needed
-};
-
 struct InterpolationOptions {
   LocalHomotopy homotopy = LocalHomotopy::exp;
   Energy energy = Energy::similarity;
@@ -106,9 +100,6 @@ struct InterpolationOptions {
   /// The sparse back-end; none: chosen by the mesh's size (sparse_factor.hpp). Same minimiser either way,
   /// to rounding; for benchmarks comparing them.
   std::optional<SparseBackEnd> back_end;
-  /// The solver of frames whose G(t) changes with t. The same minimiser either way, to 10⁻⁹ of the frame's
-  /// size; for benchmarks and tests comparing them.
-  FrameSolver frame_solver = FrameSolver::direct;
 };
 
 std::string to_string(LocalHomotopy homotopy);

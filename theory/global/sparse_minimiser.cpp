@@ -2,8 +2,6 @@
 
 #include "theory/global/refused_problem.hpp"
 
-#include <functional>
-
 namespace affinterp::global {
 
 template <class Scalar>
@@ -65,32 +63,6 @@ typename SparseMinimiser<Scalar>::Dense SparseMinimiser<Scalar>::solve(const Den
   const Eigen::Matrix<Scalar, 1, Eigen::Dynamic> delta = (S / (c * s) - alpha_.transpose() * X) / s;
   X.rowwise() += delta;  // z = w + δ 1
   return X;
-}
-
-template <class Scalar>
-CgOutcome SparseMinimiser<Scalar>::solve_near(const SparseMatrix& K, const Vector& b, Vector& z,
-                                              const CgLimits& limits) const {
-  const bool grounded = dense_ && dense_->grounded, updated = dense_ && !grounded;
-  const double c = dense_ ? dense_->weight : 0.0;
-  const std::function<void(const Vector&, Vector&)> apply = [&](const Vector& p, Vector& q) {
-    q.noalias() = K.template selfadjointView<Eigen::Lower>() * p;
-    if (updated) q += alpha_ * (c * alpha_.dot(p));  // G′ = K′ + c α αᵀ
-  };
-  const std::function<void(Vector&)> precondition = [&](Vector& r) {
-    typename SparseFactor<Scalar>::Block X = r;
-    factor_->solve_in_place(X);
-    r = X.col(0);
-    if (updated) r -= K_inverse_alpha_ * (c * alpha_.dot(r) / (Scalar(1) + c * alpha_K_alpha_));  // as solve()
-  };
-  if (!grounded) return preconditioned_cg<Scalar>(apply, precondition, b, z, limits);
-  // as solve(): K′_0 w = b − α S / s with its row 0 zero (w_0 = 0), then z = w + δ 1
-  const Scalar s = alpha_.sum(), S = b.sum();
-  Vector rhs = b - alpha_ * (S / s);
-  rhs[0] = 0;
-  Vector w = z.array() - z[0];
-  const CgOutcome outcome = preconditioned_cg<Scalar>(apply, precondition, rhs, w, limits);
-  if (outcome.converged) z = w.array() + (S / (c * s) - alpha_.dot(w)) / s;
-  return outcome;
 }
 
 template class SparseMinimiser<double>;

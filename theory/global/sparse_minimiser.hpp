@@ -11,10 +11,6 @@
 //   - K definite (a pinned vertex or locus fixes translation): Sherman–Morrison with the positive update,
 //     z = x − y (c αᵀx) / (1 + c αᵀy), x = K⁻¹b, y = K⁻¹α (solved once per factorisation); the
 //     denominator is at least 1, so this too needs no rank test.
-// For a G that changes from frame to frame, solve_near solves a later frame's G by the conjugate gradient
-// method (preconditioned_cg.hpp), the factor of the frame it was factorised at serving as the preconditioner:
-// the same elimination, with K⁻¹ applied iteratively.
-#include "theory/global/preconditioned_cg.hpp"
 #include "theory/global/sparse_factor.hpp"
 
 #include <Eigen/Core>
@@ -39,7 +35,6 @@ class SparseMinimiser {
  public:
   using SparseMatrix = Eigen::SparseMatrix<Scalar>;
   using Dense = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
-  using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
 
   SparseMinimiser() = default;
   SparseMinimiser(const SparseMinimiser& other);
@@ -56,13 +51,10 @@ class SparseMinimiser {
   void factorise(const SparseMatrix& K);
   /// G⁻¹ R, all columns in one solve.
   Dense solve(const Dense& R) const;
-  /// z ← G′⁻¹ b for G′ = K′ + the dense term, K′ another matrix of the analysed pattern (a later frame's,
-  /// grounded alike), by preconditioned_cg from the guess in z (the previous frame's minimiser, say), with
-  /// this minimiser's G⁻¹ as the preconditioner. z is the answer when the outcome says converged.
-  CgOutcome solve_near(const SparseMatrix& K, const Vector& b, Vector& z, const CgLimits& limits) const;
   const SparseFactor<Scalar>& factor() const { return *factor_; }
 
  private:
+  using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
   std::unique_ptr<SparseFactor<Scalar>> factor_;
   std::optional<DenseTerm> dense_;
   Vector alpha_;             ///< α in the scalar type

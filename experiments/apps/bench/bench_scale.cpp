@@ -15,7 +15,6 @@
 // Run with --benchmark_filter to leave out the largest size (it takes minutes).
 #include "experiments/apps/bench/bench_context.hpp"
 #include "experiments/inputs/shapes/curl.hpp"
-#include "experiments/inputs/shapes/grid.hpp"
 #include "experiments/inputs/shapes/man.hpp"
 #include "experiments/inputs/shapes/subdivide.hpp"
 #include "theory/global/constraint_terms.hpp"
@@ -33,7 +32,6 @@
 #include <complex>
 #include <fstream>
 #include <map>
-#include <numbers>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -136,48 +134,6 @@ void frames_batched(benchmark::State& state, Energy energy, int level, std::opti
   report(state, pair, own);
 }
 
-/// Issue 19's strip, 18.8 × 2 in `cols` × `rows` quads, coiled by a circular curl through `turn` radians
-/// about its centre line: rotations up to `turn`, and the width's edges stretched and compressed by the
-/// curvature (by 1 ± turn / 18.8).
-shapes::MeshPairShapes coiled_strip(int cols, int rows, double turn) {
-  shapes::MeshPairShapes pair;
-  pair.source.vertices.resize(2, (cols + 1) * (rows + 1));
-  for (int j = 0; j <= rows; ++j)
-    for (int i = 0; i <= cols; ++i)
-      pair.source.vertices.col(j * (cols + 1) + i) = Eigen::Vector2d(18.8 * i / cols, 2.0 * j / rows - 1);
-  pair.source.triangles = shapes::grid_triangles(cols, rows);
-  pair.target = pair.source;
-  pair.target.vertices = shapes::Curl{18.8, turn, 1}.apply(pair.source.vertices, 1);
-  return pair;
-}
-
-/// The workloads of the frame solvers' comparison: the curled man at 261k triangles (gentle: one radian,
-/// nearly isometric), the strip coiled 1.5 turns (rotations to 3π, width stretched by 0.5–1.5) and 2.5
-/// turns (5π, 0.17–1.83), 250k triangles each.
-const shapes::MeshPairShapes& solver_workload(int which) {
-  static const shapes::MeshPairShapes spiral = coiled_strip(1000, 125, 3 * std::numbers::pi),
-                                      coil = coiled_strip(1000, 125, 5 * std::numbers::pi);
-  return which == 0 ? workload(1) : which == 1 ? spiral : coil;
-}
-
-/// E^R's frame solvers side by side (FrameSolver), as frames_batched: 8 consecutive frames (Δt = 1/60) per
-/// batch call, each worker continuing from its previous frames.
-void frame_solver(benchmark::State& state, int which, global::FrameSolver solver) {
-  const shapes::MeshPairShapes& pair = solver_workload(which);
-  global::InterpolationOptions options = options_for(Energy::similarity, pair, std::nullopt);
-  options.frame_solver = solver;
-  const global::Interpolation interpolation(pair.source, pair.target, options);
-  constexpr int batch = 8;
-  int k = 0;
-  for (auto _ : state) {
-    std::vector<double> times;
-    for (int j = 0; j < batch; ++j) times.push_back((k++ % 60 + 0.5) / 60);
-    benchmark::DoNotOptimize(interpolation.vertices_at(times).data());
-  }
-  state.counters["frames_per_s"] = benchmark::Counter(batch, benchmark::Counter::kIsIterationInvariantRate);
-  state.counters["triangles"] = static_cast<double>(pair.source.triangle_count());
-}
-
 /// The sparse system of a frame as the engine builds it (FrameAssembly): E^F's real L (the real part of
 /// H, factored once), E^R's complex Hermitian H(½); both grounded at vertex 0 for the barycentre.
 template <class Scalar>
@@ -243,12 +199,6 @@ void repeated(benchmark::internal::Benchmark* b) {
 }
 
 void register_all() {
-  for (const auto& [which, name] : {std::pair{0, "man-curl"}, {1, "spiral-1.5"}, {2, "coil-2.5"}})
-    for (const auto& [solver, solver_name] :
-         {std::pair{global::FrameSolver::direct, "direct"}, {global::FrameSolver::preconditioned, "preconditioned"}})
-      benchmark::RegisterBenchmark((std::string("frame_solver/R/") + name + "/" + solver_name).c_str(), frame_solver,
-                                   which, solver)
-          ->Apply(repeated);
   std::vector<global::SparseBackEnd> back_ends = {global::SparseBackEnd::simplicial};
   if (global::has_cholmod()) back_ends.push_back(global::SparseBackEnd::cholmod);
   for (int level = coarsest_level; level <= finest_level; ++level) {
