@@ -1,6 +1,9 @@
 #include "theory/global/cholmod_factor.hpp"
 
+#include <dlfcn.h>
+
 #include <cmath>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -11,7 +14,28 @@ namespace {
 template <class Scalar>
 constexpr int xtype = std::is_same_v<Scalar, double> ? CHOLMOD_REAL : CHOLMOD_COMPLEX;
 
+/// Asks CHOLMOD's BLAS for one thread, once per process, when it is OpenBLAS (openblas_set_num_threads, found
+/// at run time in the loaded library; with another BLAS nothing changes). The engine runs frames in parallel
+/// itself, and OpenBLAS's pool of threads, shared by concurrent callers and spinning between calls, made a batch
+/// of E^R frames at 1M triangles 2.8x slower on 2 cores (bench_scale batch_frames/R, OPENBLAS_NUM_THREADS=2
+/// against 1). One thread also makes the factor the same whatever the machine's thread count. This sets the
+/// thread count of the process's OpenBLAS (numpy's too, in the Python module).
+void single_threaded_blas() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    using SetThreads = void (*)(int);
+    void* symbol = dlsym(RTLD_DEFAULT, "openblas_set_num_threads");
+    if (!symbol)  // a library loaded with RTLD_LOCAL (the Python module's CHOLMOD) is found by its name
+      if (void* openblas = dlopen("libopenblas.so.0", RTLD_NOW | RTLD_NOLOAD)) {
+        if (void* set = dlsym(openblas, "openblas_set_num_threads")) reinterpret_cast<SetThreads>(set)(1);
+        dlclose(openblas);  // CHOLMOD's own reference keeps it loaded
+      }
+    if (symbol) reinterpret_cast<SetThreads>(symbol)(1);
+  });
+}
+
 void start(cholmod_common& common) {
+  single_threaded_blas();
   cholmod_start(&common);
   common.supernodal = CHOLMOD_SUPERNODAL;
   common.nmethods = 1;
