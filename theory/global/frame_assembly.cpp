@@ -195,7 +195,11 @@ Eigen::VectorXcd FrameAssembly::right_hand_side_at(double t, std::size_t threads
     // Each triangle's terms of ũ, then each vertex's sum over its star in triangle order (the order of a
     // plain loop over the triangles): the same sums whatever the number of threads.
     const std::size_t m = forward_terms_.size();
-    std::vector<Eigen::Vector3cd> forward(m), backward(reverse_ ? m : 0);
+    // kept by the calling thread from frame to frame (fresh pages for each frame cost page faults), and named
+    // by references that the threads below share (a thread_local's name means each thread's own)
+    thread_local std::vector<Eigen::Vector3cd> forward_kept, backward_kept;
+    std::vector<Eigen::Vector3cd>&forward = forward_kept, &backward = backward_kept;
+    forward.resize(m), backward.resize(reverse_ ? m : 0);
     auto terms_of = [](const TriangleTerm& term, const Eigen::Matrix2d& A) -> Eigen::Vector3cd {
       return term.weight * term.frobenius_share * hermitian_frobenius_linear_term(term.D, A);
     };
@@ -206,17 +210,15 @@ Eigen::VectorXcd FrameAssembly::right_hand_side_at(double t, std::size_t threads
       }
     });
     for_each_range(static_cast<std::size_t>(n_), threads, [&](std::size_t first, std::size_t last) {
-      for (const std::vector<Eigen::Vector3cd>* terms : {&forward, &backward})
-        for (std::size_t k = first; k < last; ++k)
-          for (int s = stars_.start[k]; s < stars_.start[k + 1]; ++s) {
-            const auto i = static_cast<std::size_t>(stars_.triangle[static_cast<std::size_t>(s)]);
-            if (i >= terms->size()) continue;
-            const auto& vertex = forward_terms_[i].vertex;
-            const int c = vertex[0] == static_cast<Eigen::Index>(k)   ? 0
-                          : vertex[1] == static_cast<Eigen::Index>(k) ? 1
-                                                                      : 2;
-            u[static_cast<Eigen::Index>(k)] += (*terms)[i][c];
-          }
+      for (std::size_t k = first; k < last; ++k) {
+        std::complex<double> sum = 0;
+        for (const std::vector<Eigen::Vector3cd>* terms : {&forward, &backward})
+          if (!terms->empty())
+            for (int s = stars_.start[k]; s < stars_.start[k + 1]; ++s)
+              sum += (*terms)[static_cast<std::size_t>(stars_.triangle[static_cast<std::size_t>(s)])]
+                             [stars_.corner[static_cast<std::size_t>(s)]];
+        u[static_cast<Eigen::Index>(k)] = sum;
+      }
     });
   }
   for (const ConstraintTerm& term : constraints_) {  // c |Σ α_k z_k − r|²: linear part Re((−2 c α_k r)* z_k)

@@ -9,8 +9,10 @@
 namespace affinterp::global {
 
 struct VertexStars {
-  /// Triangles triangle[start[k]] … triangle[start[k + 1] − 1] contain vertex k, in increasing order.
+  /// Triangles triangle[start[k]] … triangle[start[k + 1] − 1] contain vertex k, in increasing order, as their
+  /// corners corner[start[k]] … (0, 1 or 2).
   std::vector<int> start, triangle;
+  std::vector<unsigned char> corner;
 };
 
 /// The stars of vertices 0 … vertex_count − 1 of `triangles` (whose indices lie in that range).
