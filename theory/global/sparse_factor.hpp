@@ -5,8 +5,8 @@
 //   - Eigen's SimplicialLDLT (always available): the faster one to factorise on small meshes, where the
 //     supernodes stay too small for BLAS-3 kernels to pay;
 //   - CHOLMOD's supernodal Cholesky (SuiteSparse; built in when CMake finds it, AFFINTERP_HAS_CHOLMOD), on
-//     an optimised BLAS (experiments/setup.sh installs OpenBLAS) 1.8x faster to factorise at 1M triangles,
-//     and faster to solve E^F's two columns from a few thousand unknowns (cholmod_from_unknowns).
+//     an optimised BLAS (experiments/setup.sh installs OpenBLAS) 1.7-1.8x faster to factorise at 1M
+//     triangles (cholmod_from_unknowns).
 // The symbolic analysis (fill-reducing ordering, elimination tree or supernodes) is done once for the
 // pattern and reused by every numeric factorisation.
 #include "theory/global/options.hpp"
@@ -46,15 +46,15 @@ class SparseFactor {
 /// Unknowns (vertices) from which CHOLMOD's supernodal factor is chosen when it is built in, set from bench_scale's
 /// backend_factor and backend_solve (the man from 1k to 1M triangles; AMD EPYC, 2 cores, OpenBLAS 0.3.21 on one
 /// thread; CPU time of the one working thread, measured under a load of 4-9 on 2026-11-26):
-///  - real systems, E^F's L, factored once and solved every frame: CHOLMOD's factorisation costs more below
-///    about 110k unknowns (33k: 28.7 ms against 17.3), its solve of two columns less from about 5k (33k: 3.2 ms
-///    against 3.8; 525k: 115 against 145); its factorisation and 30 solves (the CLI's default frame count)
-///    cost less from about 8.5k unknowns (8.5k: 23.0 ms against 22.8): 10,000;
+///  - real systems, E^F's L, factored once and solved every frame: both back-ends solve alike (CHOLMOD's factor
+///    is turned into the same kind of columns, cholmod_factor.hpp: 2.0 ms at 33k unknowns, 84-85 ms at 525k),
+///    and CHOLMOD's factorisation and that turn cost less from about 210k unknowns (132k: 197 ms against 149;
+///    525k: 1094 against 1852): 200,000;
 ///  - complex systems, refactorised every frame (E^R, E^S, blends): a factorisation and a solve cost less with
 ///    CHOLMOD from about 100k unknowns (33k: 37 + 6.7 ms against 25 + 3.2; 132k: 221 + 35 against 243 + 25;
 ///    525k: 1755 + 166 against 3167 + 144): 100,000.
 template <class Scalar>
-inline constexpr Eigen::Index cholmod_from_unknowns = std::is_same_v<Scalar, double> ? 10'000 : 100'000;
+inline constexpr Eigen::Index cholmod_from_unknowns = std::is_same_v<Scalar, double> ? 200'000 : 100'000;
 
 /// Whether this build has the CHOLMOD back-end.
 bool has_cholmod();
