@@ -10,19 +10,21 @@ std::vector<std::string> draw_engine_scale(const std::filesystem::path& stem, co
   std::string plot = "plot ";
   for (std::size_t c = 0; c < series.size(); ++c) {
     figure.data("c" + std::to_string(c), series[c].points);
-    plot += std::string(c ? ", " : "") + "$c" + std::to_string(c) + " using 1:2 with linespoints title " +
-            gnuplot_string(series[c].title);
+    plot += std::string(c ? ", " : "") + "$c" + std::to_string(c) + " using 1:2 axes x1y" +
+            (series[c].memory ? "2" : "1") + " with linespoints lt " + std::to_string(series[c].colour) + " dt " +
+            std::to_string(series[c].dash) + " title " + gnuplot_string(series[c].title);
   }
   std::string lines;
-  for (std::size_t t = 0; t < targets.size(); ++t) {
-    const std::string ms = std::to_string(targets[t].ms);
-    lines += "set arrow from graph 0, first " + ms + " to graph 1, first " + ms + " nohead dt " +
-             std::to_string(t + 2) + " lc rgb '#888888'\nset label " + gnuplot_string(targets[t].label) +
-             " at graph 0.7, first " + ms + " offset 0,0.6 tc rgb '#666666'\n";
+  for (const CostTarget& target : targets) {
+    const std::string axis = target.memory ? "second " : "first ", value = std::to_string(target.value);
+    lines += "set arrow from graph 0, " + axis + value + " to graph 1, " + axis + value +
+             " nohead dt 3 lc rgb '#888888'\nset label " + gnuplot_string(target.label) + " at graph " +
+             (target.memory ? "0.02" : "0.72") + ", " + axis + value + " offset 0,0.6 tc rgb '#666666'\n";
   }
-  figure.size(900, 560).script(
-      "set logscale xy\nset xlabel 'triangles'\nset ylabel 'time (ms)'\nset key top left\n"
-      "set title 'global engine: cost against mesh size (bench\\_scale)'\n" +
+  figure.size(1100, 700).script(
+      "set logscale xy\nset logscale y2\nset xlabel 'triangles'\nset ylabel 'time (ms)'\n"
+      "set y2label 'peak memory (MB)'\nset ytics nomirror\nset y2tics\nset key outside right top font ',9'\n"
+      "set title 'global engine: cost against mesh size (bench\\_scale; exponent p of cost ~ n^p fitted from 65k)'\n" +
       lines + plot + "\n");
   return figure.render();
 }

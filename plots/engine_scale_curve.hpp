@@ -1,6 +1,7 @@
 #pragma once
 // The global engine's cost against mesh size (bench_scale): time against triangles, log-log, one line per
-// measured quantity, with the targets as horizontal lines.
+// measured quantity (colour: the quantity, dash: the back-end), memory on the right axis, with the targets as
+// horizontal lines.
 #include "plots/figure.hpp"
 
 #include <filesystem>
@@ -9,16 +10,20 @@
 
 namespace affinterp::plots {
 
-/// One measured quantity: (triangles, ms) points in ascending size.
+/// One measured quantity: (triangles, value) points in ascending size.
 struct CostSeries {
   std::string title;
   Table points;
+  int colour = 1;       ///< the house style's line colour
+  int dash = 1;         ///< gnuplot's dash type
+  bool memory = false;  ///< MB on the right axis, else ms on the left
 };
 
 /// A target drawn as a dashed horizontal line, labelled.
 struct CostTarget {
-  double ms;
+  double value;
   std::string label;
+  bool memory = false;  ///< MB on the right axis, else ms on the left
 };
 
 /// Draws `series` and `targets` to stem.png and stem.svg; returns the file names.

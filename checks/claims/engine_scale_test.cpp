@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -36,33 +37,55 @@ fs::path write_bench(const nlohmann::json& benchmarks) {
   return file;
 }
 
-/// The four benchmarks of one size.
-std::vector<nlohmann::json> size(int triangles, double setup_ms, double frame_F_ms, double frame_R_ms, double peak) {
+/// The benchmarks of one size: the engine's set-up and frames, a batch of 8 E^R frames taking 8 × batch_R_ms,
+/// and the simplicial back-end's factorisation of E^R.
+std::vector<nlohmann::json> size(int triangles, double setup_ms, double frame_F_ms, double batch_R_ms, double peak) {
   const auto name = [triangles](const char* benchmark) {
     return std::string(benchmark).append("/").append(std::to_string(triangles));
   };
-  return {median(name("scale_setup/F"), setup_ms, peak / 2), median(name("scale_setup/R"), setup_ms * 1.2, peak),
-          median(name("scale_frame/F"), frame_F_ms, peak / 2), median(name("scale_frame/R"), frame_R_ms, peak)};
+  return {median(name("scale_setup/F"), setup_ms, peak / 2),
+          median(name("scale_setup/R"), setup_ms * 1.2, peak),
+          median(name("scale_frame/F"), frame_F_ms, peak / 2),
+          median(name("scale_frame/R"), batch_R_ms * 3, peak),
+          median(name("batch_frames/R"), batch_R_ms * 8, peak),
+          median(name("backend_factor/R") + "/simplicial", batch_R_ms, 0)};
+}
+
+/// The benchmarks of two sizes, 261k and 1M triangles.
+nlohmann::json two_sizes(const std::vector<nlohmann::json>& small, const std::vector<nlohmann::json>& large) {
+  nlohmann::json benchmarks = nlohmann::json::array();
+  for (const auto& runs : {small, large})
+    for (const auto& run : runs) benchmarks.push_back(run);
+  return benchmarks;
 }
 
 TEST(EngineScale, TheLargestSizeBeyondAMillionDecidesTheTargets) {
-  nlohmann::json benchmarks = nlohmann::json::array();
-  for (const auto& runs : {size(65326, 100, 4, 26, 64), size(1045216, 4000, 90, 550, 1900)})
-    for (const auto& run : runs) benchmarks.push_back(run);
-  fs::path file = write_bench(benchmarks);
+  const std::vector<nlohmann::json> small = size(261304, 600, 20, 150, 300);
+  fs::path file = write_bench(two_sizes(small, size(1045216, 2500, 90, 550, 1900)));
   nlohmann::json table = engine_scale(file, RunSettings{});
   ASSERT_EQ(table["rows"].size(), 2u);
-  EXPECT_EQ(table["rows"][0]["triangles"], 65326.0);  // ascending
-  EXPECT_EQ(table["rows"][1]["setup_R_ms"], 4800.0);
-  EXPECT_EQ(table["rows"][1]["setup_R_cpu_ms"], 2400.0);
-  EXPECT_EQ(table["rows"][1]["peak_MB"], 1900.0);  // the largest of the size's benchmarks
+  EXPECT_EQ(table["rows"][0]["triangles"], 261304.0);  // ascending
+  EXPECT_EQ(table["rows"][1]["setup_R_ms"], 3000.0);
+  EXPECT_EQ(table["rows"][1]["setup_R_cpu_ms"], 1500.0);
+  EXPECT_EQ(table["rows"][1]["batch_R_ms"], 550.0);  // per frame of the batch of 8
+  EXPECT_EQ(table["rows"][1]["peak_MB"], 1900.0);    // the largest of the size's benchmarks
+  EXPECT_NEAR(table["growth_R"].get<double>(), 550.0 / 150, 1e-12);
+  EXPECT_NEAR(table["exponents"]["batch_R_ms"].get<double>(), std::log(550.0 / 150) / std::log(1045216.0 / 261304),
+              1e-12);
+  ASSERT_EQ(table["back_ends"].size(), 1u);
+  EXPECT_EQ(table["back_ends"][0]["name"], "simplicial");
+  EXPECT_EQ(table["back_ends"][0]["rows"][1]["factor_R_ms"], 550.0);
   EXPECT_EQ(table["met"], true);
   EXPECT_EQ(table["machine"], "test cpu");
   EXPECT_TRUE(table["figures"].empty()) << "no figure without a figure folder";
 
-  file = write_bench(size(1045216, 4000, 90, 700, 1900));
-  EXPECT_EQ(engine_scale(file, RunSettings{})["met"], false) << "E^R above 600 ms a frame";
-  file = write_bench(size(1045216, 4000, 90, 550, 2100));
+  file = write_bench(two_sizes(small, size(1045216, 3100, 90, 550, 1900)));
+  EXPECT_EQ(engine_scale(file, RunSettings{})["met"], false) << "E^R's set-up above 3 s";
+  file = write_bench(two_sizes(small, size(1045216, 2500, 90, 700, 1900)));
+  EXPECT_EQ(engine_scale(file, RunSettings{})["met"], false) << "E^R above 600 ms a batched frame";
+  file = write_bench(two_sizes(size(261304, 600, 20, 100, 300), size(1045216, 2500, 90, 550, 1900)));
+  EXPECT_EQ(engine_scale(file, RunSettings{})["met"], false) << "E^R grew 5.5 times";
+  file = write_bench(two_sizes(small, size(1045216, 2500, 90, 550, 2100)));
   EXPECT_EQ(engine_scale(file, RunSettings{})["met"], false) << "peak above 2 GB";
 
   file = write_bench(size(261304, 700, 20, 150, 300));
@@ -75,7 +98,7 @@ TEST(EngineScale, DrawsTheCostCurve) {
   nlohmann::json benchmarks = nlohmann::json::array();
   for (const auto& runs : {size(65326, 100, 4, 26, 64), size(261304, 700, 20, 150, 300)})
     for (const auto& run : runs) benchmarks.push_back(run);
-  const fs::path file = write_bench(benchmarks);
+  const fs::path file = write_bench(benchmarks);  // two sizes from 65k: exponents fitted
   RunSettings settings;
   settings.figure_dir =
       fs::temp_directory_path() / "affinterp_engine_scale_figures" / fs::path(std::to_string(::getpid()));

@@ -72,13 +72,24 @@ TEST(Report, LinksAViewerPageInsteadOfShowingItAsAnImage) {
 
 TEST(Report, ScaleTableAndCurveAgainstTheTargets) {
   const nlohmann::json row = {{"triangles", 1045216.0}, {"setup_F_ms", 2500.0}, {"setup_R_ms", 3100.0},
-                              {"frame_F_ms", 80.0},     {"frame_R_ms", 900.0},  {"peak_MB", 1500.0}};
+                              {"frame_F_ms", 80.0},     {"frame_R_ms", 900.0},  {"batch_R_ms", 550.0},
+                              {"peak_MB", 1500.0}};
+  const nlohmann::json factor = {{"triangles", 1045216.0}, {"factor_R_cpu_ms", 1234.5}};
   const nlohmann::json scale = {
       {"machine", "test cpu"},
       {"compiler", "g++"},
+      {"blas", "/usr/lib/openblas/libblas.so.3"},
+      {"cholmod_from_unknowns", {{"real", 10000}, {"complex", 100000}}},
       {"rows", {row}},
+      {"exponents", {{"batch_R_ms", 1.25}}},
+      {"back_ends", {{{"name", "cholmod"}, {"rows", {factor}}, {"exponents", {{"factor_R_ms", 1.5}}}}}},
       {"targets",
-       {{"triangles", 1e6}, {"setup_ms", 5000.0}, {"frame_F_ms", 100.0}, {"frame_R_ms", 600.0}, {"peak_MB", 2048.0}}},
+       {{"triangles", 1e6},
+        {"setup_ms", 3000.0},
+        {"frame_F_ms", 100.0},
+        {"batch_R_ms", 600.0},
+        {"growth_R", 5.0},
+        {"peak_MB", 2048.0}}},
       {"met", false},
       {"figures", {"figures/engine-scale.png", "figures/engine-scale.svg"}}};
   nlohmann::json doc = {{"seed", 1},
@@ -89,7 +100,13 @@ TEST(Report, ScaleTableAndCurveAgainstTheTargets) {
                         {"engine_scale", scale}};
   std::string md = affinterp::report::render_markdown(doc);
   EXPECT_NE(md.find("## Global engine at scale"), std::string::npos);
-  EXPECT_NE(md.find("| 1045216 | 2500 (—) | 3100 (—) | 80.0 (—) | 900.0 (—) | 1500 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 1045216 | 2500 (—) | 3100 (—) | 80.0 (—) | 900.0 (—) | 550.0 | 1500 |"), std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| — | — | — | — | 1.25 | — |"), std::string::npos) << "the exponents' row";
+  EXPECT_NE(md.find("| cholmod | 1045216 | — | 1234.5 |"), std::string::npos) << "the back-ends' table";
+  EXPECT_NE(md.find("below 10000 unknowns (vertices) for E^F's real system"), std::string::npos);
+  EXPECT_NE(md.find("below 100000 for the complex systems"), std::string::npos);
+  EXPECT_NE(md.find("/usr/lib/openblas/libblas.so.3"), std::string::npos);
   EXPECT_NE(md.find("**not met**"), std::string::npos);
   EXPECT_NE(md.find("![cost against mesh size](figures/engine-scale.png)"), std::string::npos);
   doc["engine_scale"] = nullptr;

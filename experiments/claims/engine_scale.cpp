@@ -1,36 +1,107 @@
 #include "experiments/claims/engine_scale.hpp"
 
 #include "experiments/bench/bench_results.hpp"
+#include "experiments/bench/power_law.hpp"
 #include "plots/engine_scale_curve.hpp"
+#include "theory/global/sparse_factor.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <complex>
+#include <cstdio>
 #include <map>
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace affinterp::claims {
 namespace {
 
-constexpr double target_triangles = 1e6, setup_target_ms = 5000, frame_F_target_ms = 100, frame_R_target_ms = 600,
-                 peak_target_MB = 2048;
+constexpr double target_triangles = 1e6, setup_target_ms = 3000, frame_F_target_ms = 100, batch_R_target_ms = 600,
+                 peak_target_MB = 2048, growth_R_target = 5;
+/// The exponents are fitted from this size up: below it fixed costs (threads, allocation) bend the curves.
+constexpr double fit_from_triangles = 60'000;
+/// Frames per batch_frames iteration (bench_scale.cpp).
+constexpr double batch_frames = 8;
 
 bool at_most(const nlohmann::json& value, double target) { return value.is_number() && value.get<double>() <= target; }
 
-/// Time (ms) against triangles, log-log, one line per measured quantity (plots/engine_scale_curve.hpp).
-std::vector<std::string> draw_cost_curve(const RunSettings& settings, const nlohmann::json& rows) {
+/// Splits "kind/energy/triangles[/back-end]".
+struct BenchName {
+  std::string kind, energy, back_end;
+  double triangles = 0;
+};
+std::optional<BenchName> parse(const std::string& name) {
+  std::vector<std::string> parts;
+  for (std::size_t start = 0;;) {
+    const std::size_t slash = name.find('/', start);
+    parts.push_back(name.substr(start, slash - start));
+    if (slash == std::string::npos) break;
+    start = slash + 1;
+  }
+  if (parts.size() < 3 || parts[2].empty() || !std::isdigit(static_cast<unsigned char>(parts[2][0])))
+    return std::nullopt;
+  return BenchName{parts[0], parts[1], parts.size() > 3 ? parts[3] : "", std::stod(parts[2])};
+}
+
+/// The rows of `by_size` in ascending size, every key of `keys` present (null: not measured).
+nlohmann::json rows_of(std::map<double, nlohmann::json>& by_size, const std::vector<std::string>& keys) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (auto& [triangles, row] : by_size) {
+    for (const std::string& key : keys)
+      if (!row.contains(key)) row[key] = nullptr;
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+/// The exponent of `key` over `rows` from fit_from_triangles up (null when undetermined).
+nlohmann::json exponent(const nlohmann::json& rows, const std::string& key) {
+  std::vector<std::pair<double, double>> points;
+  for (const auto& row : rows)
+    if (row[key].is_number()) points.emplace_back(row["triangles"].get<double>(), row[key].get<double>());
+  const double p = bench::power_law_exponent(points, fit_from_triangles);
+  return std::isfinite(p) ? nlohmann::json(p) : nlohmann::json();
+}
+
+/// Time (ms) and memory (MB) against triangles, log-log (plots/engine_scale_curve.hpp): the engine as it
+/// chooses, and each back-end's set-up and frames, each line titled with its fitted exponent.
+std::vector<std::string> draw_cost_curve(const RunSettings& settings, const nlohmann::json& scale) {
   std::vector<plots::CostSeries> series;
-  for (const auto& [key, title] :
-       {std::pair{"setup_F_ms", "set-up, E^F"}, std::pair{"setup_R_ms", "set-up, E^R"},
-        std::pair{"frame_F_ms", "one frame, E^F"}, std::pair{"frame_R_ms", "one frame, E^R"}}) {
-    plots::CostSeries& s = series.emplace_back(plots::CostSeries{title, {}});
+  auto add = [&](const nlohmann::json& rows, const nlohmann::json& exponents, const std::string& key,
+                 const std::string& title, int colour, int dash, bool memory) {
+    plots::CostSeries s{title, {}, colour, dash, memory};
     for (const auto& row : rows)
       if (row[key].is_number()) s.points.push_back({row["triangles"].get<double>(), row[key].get<double>()});
+    if (s.points.empty()) return;
+    if (exponents[key].is_number()) {
+      char fitted[32];
+      std::snprintf(fitted, sizeof fitted, " (n^{%.2f})", exponents[key].get<double>());
+      s.title += fitted;
+    }
+    series.push_back(std::move(s));
+  };
+  const std::vector<std::pair<std::string, std::string>> quantities = {{"setup_F_ms", "set-up E^F"},
+                                                                       {"setup_R_ms", "set-up E^R"},
+                                                                       {"frame_F_ms", "E^F frame"},
+                                                                       {"frame_R_ms", "E^R frame"}};
+  int dash = 2;
+  for (const auto& back_end : scale["back_ends"]) {
+    int colour = 1;
+    for (const auto& [key, title] : quantities)
+      add(back_end["rows"], back_end["exponents"], key, title + ", " + back_end["name"].get<std::string>(), colour++,
+          dash, false);
+    ++dash;
   }
+  add(scale["rows"], scale["exponents"], "batch_R_ms", "E^R frame, batched (engine)", 4, 1, false);
+  add(scale["rows"], scale["exponents"], "peak_MB", "peak memory, MB (engine, right axis)", 7, 1, true);
   return RunSettings::figure_refs(plots::draw_engine_scale(settings.figure_stem("engine-scale"), series,
-                                                           {{setup_target_ms, "set-up target at 1M"},
-                                                            {frame_R_target_ms, "E^R frame target"},
-                                                            {frame_F_target_ms, "E^F frame target"}}));
+                                                           {{setup_target_ms, "set-up target at 1M", false},
+                                                            {batch_R_target_ms, "E^R batched frame target", false},
+                                                            {frame_F_target_ms, "E^F frame target", false},
+                                                            {peak_target_MB, "memory target", true}}));
 }
 
 }  // namespace
@@ -40,47 +111,83 @@ nlohmann::json engine_scale(const std::filesystem::path& bench_file, const RunSe
   if (!times) return nullptr;
   const std::optional<bench::BenchResults> cpu = bench::read_bench_results(bench_file, "cpu_time");
   const std::optional<bench::BenchResults> peaks = bench::read_bench_results(bench_file, "peak_MB");
-  // scale_<setup|frame>/<energy>/<triangles>
-  std::map<double, nlohmann::json> by_size;
+  std::map<double, nlohmann::json> engine;                              // scale_* and batch_frames, by size
+  std::map<std::string, std::map<double, nlohmann::json>> by_back_end;  // backend_*, by back-end and size
   for (const auto& [name, ms] : times->median) {
-    const std::size_t first = name.find('/'), second = name.find('/', first + 1);
-    if (!name.starts_with("scale_") || second == std::string::npos) continue;
-    const std::string kind = name.substr(6, first - 6), energy = name.substr(first + 1, second - first - 1);
-    const double triangles = std::stod(name.substr(second + 1));
-    nlohmann::json& row = by_size[triangles];
-    row["triangles"] = triangles;
-    row[kind + "_" + energy + "_ms"] = ms;
-    if (const auto cpu_ms = cpu ? (*cpu)[name] : std::nullopt) row[kind + "_" + energy + "_cpu_ms"] = *cpu_ms;
-    if (const auto peak = peaks ? (*peaks)[name] : std::nullopt)
-      row["peak_MB"] = std::max(row.value("peak_MB", 0.0), *peak);
+    const std::optional<BenchName> b = parse(name);
+    if (!b) continue;
+    const auto value_in = [&name](const std::optional<bench::BenchResults>& results) {
+      const std::optional<double> value = results ? (*results)[name] : std::nullopt;
+      return value ? nlohmann::json(*value) : nlohmann::json();
+    };
+    const nlohmann::json cpu_ms = value_in(cpu), peak = value_in(peaks);
+    if (b->kind == "scale_setup" || b->kind == "scale_frame" || b->kind == "batch_frames") {
+      nlohmann::json& row = engine[b->triangles];
+      row["triangles"] = b->triangles;
+      const std::string key = b->kind == "batch_frames" ? "batch_" + b->energy : b->kind.substr(6) + "_" + b->energy;
+      row[key + "_ms"] = b->kind == "batch_frames" ? ms / batch_frames : ms;  // batches: per frame, amortised
+      if (cpu_ms.is_number() && b->kind != "batch_frames") row[key + "_cpu_ms"] = cpu_ms;
+      if (peak.is_number()) row["peak_MB"] = std::max(row.value("peak_MB", 0.0), peak.get<double>());
+    } else if (b->kind.starts_with("backend_") && !b->back_end.empty()) {
+      nlohmann::json& row = by_back_end[b->back_end][b->triangles];
+      row["triangles"] = b->triangles;
+      const std::string key = b->kind.substr(8) + "_" + b->energy;
+      row[key + "_ms"] = ms;
+      if (cpu_ms.is_number()) row[key + "_cpu_ms"] = cpu_ms;
+    }
   }
-  nlohmann::json rows = nlohmann::json::array();
-  for (auto& [triangles, row] : by_size) {
-    for (const char* key : {"setup_F_ms", "setup_R_ms", "frame_F_ms", "frame_R_ms", "setup_F_cpu_ms", "setup_R_cpu_ms",
-                            "frame_F_cpu_ms", "frame_R_cpu_ms", "peak_MB"})
-      if (!row.contains(key)) row[key] = nullptr;
-    rows.push_back(row);
+  nlohmann::json rows =
+      rows_of(engine, {"setup_F_ms", "setup_R_ms", "frame_F_ms", "frame_R_ms", "setup_F_cpu_ms", "setup_R_cpu_ms",
+                       "frame_F_cpu_ms", "frame_R_cpu_ms", "batch_F_ms", "batch_R_ms", "peak_MB"});
+  nlohmann::json exponents;
+  for (const char* key : {"setup_F_ms", "setup_R_ms", "frame_F_ms", "frame_R_ms", "batch_R_ms", "peak_MB"})
+    exponents[key] = exponent(rows, key);
+  nlohmann::json back_ends = nlohmann::json::array();
+  for (auto& [name, sizes] : by_back_end) {
+    const std::vector<std::string> keys = {"setup_F_ms",  "setup_R_ms",  "frame_F_ms", "frame_R_ms",
+                                           "factor_F_ms", "factor_R_ms", "solve_F_ms", "solve_R_ms"};
+    std::vector<std::string> with_cpu = keys;
+    for (const std::string& key : keys) with_cpu.push_back(key.substr(0, key.size() - 3) + "_cpu_ms");
+    nlohmann::json back_end_rows = rows_of(sizes, with_cpu), back_end_exponents;
+    for (const std::string& key : keys) back_end_exponents[key] = exponent(back_end_rows, key);
+    back_ends.push_back({{"name", name}, {"rows", back_end_rows}, {"exponents", back_end_exponents}});
   }
-  nlohmann::json met = nullptr;
-  for (const auto& row : rows)  // the largest size at or beyond the targets' 1M triangles
+  nlohmann::json met = nullptr, growth_R = nullptr;
+  for (std::size_t r = 0; r < rows.size(); ++r) {  // the largest size at or beyond the targets' 1M triangles
+    const nlohmann::json& row = rows[r];
+    if (r > 0 && rows[r - 1]["batch_R_ms"].is_number() && row["batch_R_ms"].is_number())
+      growth_R = row["batch_R_ms"].get<double>() / rows[r - 1]["batch_R_ms"].get<double>();
     if (row["triangles"].get<double>() >= target_triangles)
       met = at_most(row["setup_F_ms"], setup_target_ms) && at_most(row["setup_R_ms"], setup_target_ms) &&
-            at_most(row["frame_F_ms"], frame_F_target_ms) && at_most(row["frame_R_ms"], frame_R_target_ms) &&
-            at_most(row["peak_MB"], peak_target_MB);
-  return {{"file", bench_file.filename().string()},
-          {"machine", times->machine},
-          {"compiler", times->compiler},
-          {"flags", times->flags},
-          {"rows", rows},
-          {"targets",
-           {{"triangles", target_triangles},
-            {"setup_ms", setup_target_ms},
-            {"frame_F_ms", frame_F_target_ms},
-            {"frame_R_ms", frame_R_target_ms},
-            {"peak_MB", peak_target_MB}}},
-          {"met", met},
-          {"figures", settings.draws_figures() && !rows.empty() ? nlohmann::json(draw_cost_curve(settings, rows))
-                                                                : nlohmann::json::array()}};
+            at_most(row["frame_F_ms"], frame_F_target_ms) && at_most(row["batch_R_ms"], batch_R_target_ms) &&
+            at_most(row["peak_MB"], peak_target_MB) && at_most(growth_R, growth_R_target);
+  }
+  nlohmann::json scale = {
+      {"file", bench_file.filename().string()},
+      {"machine", times->machine},
+      {"compiler", times->compiler},
+      {"flags", times->flags},
+      {"blas", times->context.value("affinterp_blas", "unknown")},
+      {"cholmod_from_unknowns", global::has_cholmod()
+                                    ? nlohmann::json{{"real", global::cholmod_from_unknowns<double>},
+                                                     {"complex", global::cholmod_from_unknowns<std::complex<double>>}}
+                                    : nlohmann::json()},
+      {"rows", rows},
+      {"exponents", exponents},
+      {"exponents_from_triangles", fit_from_triangles},
+      {"growth_R", growth_R},
+      {"back_ends", back_ends},
+      {"targets",
+       {{"triangles", target_triangles},
+        {"setup_ms", setup_target_ms},
+        {"frame_F_ms", frame_F_target_ms},
+        {"batch_R_ms", batch_R_target_ms},
+        {"peak_MB", peak_target_MB},
+        {"growth_R", growth_R_target}}},
+      {"met", met}};
+  scale["figures"] = settings.draws_figures() && !rows.empty() ? nlohmann::json(draw_cost_curve(settings, scale))
+                                                               : nlohmann::json::array();
+  return scale;
 }
 
 }  // namespace affinterp::claims

@@ -73,11 +73,12 @@ class Interpolation {
   }
 
  private:
-  /// v(t), with the engine's errors as ValueErrors (an error escapes the released GIL as a C++ exception
-  /// and is translated once it is held again).
-  Eigen::Matrix2Xd frame(double t) const {
+  /// The engine's answer to `call`, with its errors as ValueErrors (an error escapes the released GIL as a
+  /// C++ exception and is translated once it is held again).
+  template <class Call>
+  auto translated(Call call) const {
     try {
-      return engine_->vertices_at(t);
+      return call();
     } catch (const std::out_of_range& e) {
       throw std::invalid_argument(e.what());
     } catch (const global::RefusedProblem& e) {
@@ -85,12 +86,17 @@ class Interpolation {
     }
   }
 
-  /// The frames at `times` written into `out`, frame k at out + 2nk: the one place to switch to the
-  /// engine's batch path when theory/global/interpolation.hpp has one.
+  Eigen::Matrix2Xd frame(double t) const {
+    return translated([&] { return engine_->vertices_at(t); });
+  }
+
+  /// The frames at `times` written into `out`, frame k at out + 2nk, computed in parallel by the engine's
+  /// batch call (interpolation.hpp).
   void fill_frames(const std::vector<double>& times, double* out) const {
-    for (std::size_t k = 0; k < times.size(); ++k)
+    const std::vector<Eigen::Matrix2Xd> frames = translated([&] { return engine_->vertices_at(times); });
+    for (std::size_t k = 0; k < frames.size(); ++k)
       Eigen::Map<Eigen::Matrix2Xd>(out + 2 * vertex_count_ * static_cast<Eigen::Index>(k), 2, vertex_count_) =
-          frame(times[k]);
+          frames[k];
   }
 
   std::unique_ptr<global::Interpolation> engine_;

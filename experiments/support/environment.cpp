@@ -41,6 +41,15 @@ std::string first_line_of_command(const char* command) {
 
 std::string cpu_flags() { return field_of("/proc/cpuinfo", "flags", ':'); }
 
+std::string loaded_blas() {
+  std::ifstream maps("/proc/self/maps");
+  for (std::string line; std::getline(maps, line);) {
+    const std::size_t path = line.find('/');
+    if (path != std::string::npos && line.find("libblas.so", path) != std::string::npos) return line.substr(path);
+  }
+  return "none loaded";
+}
+
 nlohmann::json environment_description() {
   return {
       {"compiler", std::string("g++ ") + __VERSION__},
@@ -57,6 +66,7 @@ nlohmann::json environment_description() {
                             std::to_string(NLOHMANN_JSON_VERSION_MINOR) + "." +
                             std::to_string(NLOHMANN_JSON_VERSION_PATCH)},
       {"gnuplot", first_line_of_command("gnuplot --version 2>/dev/null")},
+      {"blas", loaded_blas()},
   };
 }
 

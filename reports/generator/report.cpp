@@ -251,37 +251,84 @@ void write_engine_speed(std::ostringstream& md, const json& speed) {
   md << "\n\n";
 }
 
-/// How the engine's cost grows with the mesh against the 1M-triangle targets (bench_scale, one run).
+/// How the engine's cost grows with the mesh against the 1M-triangle targets (bench_scale, one run), and each
+/// sparse back-end's factorisation and solve side by side.
 void write_engine_scale(std::ostringstream& md, const json& scale) {
   md << "## Global engine at scale\n\n";
   if (scale.is_null()) {
     md << "Not measured: `reports/bench/bench_scale.json` is absent (run `experiments/reproduce.sh`).\n\n";
     return;
   }
-  const json& targets = scale["targets"];
-  md << "`build/bin/bench_scale` on the generated man bent by a curl through one radian (65k triangles) and that "
-        "pair subdivided 1-to-4 once and twice, with `affinterp interpolate`'s default options, the median of three "
-        "runs; wall-clock times, with the CPU time in brackets (the engine runs on one thread, so the two agree on "
-        "an idle machine; a larger wall-clock time means a shared machine); peak memory is the process's resident "
-        "high-water mark (getrusage) over each size's benchmarks; "
-        "machine: "
-     << cell(scale.value("machine", "?")) << "; " << cell(scale.value("compiler", "?")) << ". Targets at "
-     << fixed(targets["triangles"], 0) << " triangles: set-up ≤ " << fixed(targets["setup_ms"], 0) << " ms, E^F ≤ "
-     << fixed(targets["frame_F_ms"], 0) << " ms and E^R ≤ " << fixed(targets["frame_R_ms"], 0)
-     << " ms per frame, peak ≤ " << fixed(targets["peak_MB"], 0) << " MB: "
-     << (scale["met"].is_null()     ? "not measured at that size"
-         : scale["met"].get<bool>() ? "met"
-                                    : "**not met**")
-     << ".\n\n| triangles | set-up E^F (ms) | set-up E^R (ms) | frame E^F (ms) | frame E^R (ms) | peak (MB) |\n"
-        "|---|---|---|---|---|---|\n";
-  const auto both = [](const json& row, const std::string& key, int digits) {
-    return fixed(row[key + "_ms"], digits) + " (" + fixed(row.value(key + "_cpu_ms", json()), digits) + ")";
+  const json targets = scale.value("targets", json::object());
+  const auto target = [&](const char* key) { return targets.value(key, json()); };
+  const json switches = scale.value("cholmod_from_unknowns", json());
+  const auto switch_at = [&](const char* scalar) {
+    return switches.is_object() ? switches.value(scalar, json()) : json();
   };
-  for (const auto& row : scale["rows"])
-    md << "| " << fixed(row["triangles"], 0) << " | " << both(row, "setup_F", 0) << " | " << both(row, "setup_R", 0)
-       << " | " << both(row, "frame_F", 1) << " | " << both(row, "frame_R", 1) << " | " << fixed(row["peak_MB"], 0)
-       << " |\n";
-  md << "\n";
+  md << "`build/bin/bench_scale` on the generated man bent by a curl through one radian, meshed from 1k to 65k "
+        "triangles and the 65k pair subdivided 1-to-4 once and twice (261k, 1M), with `affinterp interpolate`'s "
+        "default options; the median of three runs. Wall-clock times, the calling thread's CPU time in brackets; "
+        "a batched frame is `vertices_at(times)` of 8 frames on the machine's cores, per frame; peak memory is the "
+        "process's resident high-water mark over each size's benchmarks. The sparse back-end is Eigen's simplicial "
+        "LDLᴴ below "
+     << fixed(switch_at("real"), 0) << " unknowns (vertices) for E^F's real system, factored once, and below "
+     << fixed(switch_at("complex"), 0)
+     << " for the complex systems refactorised every frame, CHOLMOD's supernodal LLᴴ from there: the switches set "
+        "from the back-ends' factorisations and solves below; CHOLMOD's BLAS: "
+     << cell(scale.value("blas", "?"))
+     << ", on one thread (the engine runs frames in parallel itself). Reusing an earlier frame's factor to "
+        "precondition conjugate gradients on E^R's frames was implemented and measured against refactorising "
+        "(commit 33008f4): 4–6× slower on a gentle and two hard workloads at 250k triangles, so every E^R frame is "
+        "factorised. Machine: "
+     << cell(scale.value("machine", "?")) << "; " << cell(scale.value("compiler", "?")) << ". Targets at "
+     << fixed(target("triangles"), 0) << " triangles: set-up ≤ " << fixed(target("setup_ms"), 0) << " ms, E^F ≤ "
+     << fixed(target("frame_F_ms"), 0) << " ms a frame, E^R ≤ " << fixed(target("batch_R_ms"), 0)
+     << " ms a batched frame growing at most " << fixed(target("growth_R"), 0) << "× from the size before, peak ≤ "
+     << fixed(target("peak_MB"), 0) << " MB: "
+     << (!scale.value("met", json()).is_boolean() ? "not measured at that size"
+         : scale["met"].get<bool>()               ? "met"
+                                                  : "**not met**")
+     << " (E^R's batched frame grew " << fixed(scale.value("growth_R", json()), 1)
+     << "× into the largest size).\n\n| triangles | set-up E^F (ms) | set-up E^R (ms) | frame E^F (ms) | frame E^R "
+        "(ms) "
+        "| batched frame E^R (ms) | peak (MB) |\n|---|---|---|---|---|---|---|\n";
+  const auto both = [](const json& row, const std::string& key, int digits) {
+    return fixed(row.value(key + "_ms", json()), digits) + " (" + fixed(row.value(key + "_cpu_ms", json()), digits) +
+           ")";
+  };
+  for (const auto& row : scale.value("rows", json::array()))
+    md << "| " << fixed(row.value("triangles", json()), 0) << " | " << both(row, "setup_F", 0) << " | "
+       << both(row, "setup_R", 0) << " | " << both(row, "frame_F", 1) << " | " << both(row, "frame_R", 1) << " | "
+       << fixed(row.value("batch_R_ms", json()), 1) << " | " << fixed(row.value("peak_MB", json()), 0) << " |\n";
+  const json& p = scale.value("exponents", json::object());
+  md << "| exponent p (cost ∝ n^p, from " << fixed(scale.value("exponents_from_triangles", json()), 0) << ") | "
+     << fixed(p.value("setup_F_ms", json()), 2) << " | " << fixed(p.value("setup_R_ms", json()), 2) << " | "
+     << fixed(p.value("frame_F_ms", json()), 2) << " | " << fixed(p.value("frame_R_ms", json()), 2) << " | "
+     << fixed(p.value("batch_R_ms", json()), 2) << " | " << fixed(p.value("peak_MB", json()), 2) << " |\n\n";
+  if (!scale.value("back_ends", json::array()).empty()) {
+    md << "Each back-end on the same matrices (`backend_*`: E^F's real L with two right-hand sides, E^R's complex "
+          "H(½) with one), CPU ms of the calling thread (a factorisation or solve runs on it alone; the set-up's and "
+          "an "
+          "E^F frame's loops use the second core too on large meshes, not counted here):\n\n| back-end | triangles | "
+          "factor E^F | factor E^R | "
+          "solve E^F | solve E^R | set-up E^F | set-up E^R | frame E^F | frame E^R |\n"
+          "|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const auto& back_end : scale["back_ends"]) {
+      for (const auto& row : back_end["rows"]) {
+        md << "| " << back_end.value("name", "") << " | " << fixed(row.value("triangles", json()), 0);
+        for (const char* key :
+             {"factor_F", "factor_R", "solve_F", "solve_R", "setup_F", "setup_R", "frame_F", "frame_R"})
+          md << " | " << fixed(row.value(std::string(key) + "_cpu_ms", json()), 1);
+        md << " |\n";
+      }
+      const json& q = back_end.value("exponents", json::object());
+      md << "| " << back_end.value("name", "") << " | exponent p";
+      for (const char* key : {"factor_F", "factor_R", "solve_F", "solve_R", "setup_F", "setup_R", "frame_F", "frame_R"})
+        md << " | " << fixed(q.value(std::string(key) + "_ms", json()), 2);
+      md << " |\n";
+    }
+    md << "\n";
+  }
   for (const auto& f : scale.value("figures", json::array()))
     if (f.get<std::string>().ends_with(".png")) md << "![cost against mesh size](" << f.get<std::string>() << ")\n\n";
 }

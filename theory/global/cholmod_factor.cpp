@@ -1,6 +1,11 @@
 #include "theory/global/cholmod_factor.hpp"
 
+#include "theory/global/ldl_substitution.hpp"
+
+#include <dlfcn.h>
+
 #include <cmath>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -11,7 +16,28 @@ namespace {
 template <class Scalar>
 constexpr int xtype = std::is_same_v<Scalar, double> ? CHOLMOD_REAL : CHOLMOD_COMPLEX;
 
+/// Asks CHOLMOD's BLAS for one thread, once per process, when it is OpenBLAS (openblas_set_num_threads, found
+/// at run time in the loaded library; with another BLAS nothing changes). The engine runs frames in parallel
+/// itself, and OpenBLAS's pool of threads, shared by concurrent callers and spinning between calls, made a batch
+/// of E^R frames at 1M triangles 2.8x slower on 2 cores (bench_scale batch_frames/R, OPENBLAS_NUM_THREADS=2
+/// against 1). One thread also makes the factor the same whatever the machine's thread count. This sets the
+/// thread count of the process's OpenBLAS (numpy's too, in the Python module).
+void single_threaded_blas() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    using SetThreads = void (*)(int);
+    void* symbol = dlsym(RTLD_DEFAULT, "openblas_set_num_threads");
+    if (!symbol)  // a library loaded with RTLD_LOCAL (the Python module's CHOLMOD) is found by its name
+      if (void* openblas = dlopen("libopenblas.so.0", RTLD_NOW | RTLD_NOLOAD)) {
+        if (void* set = dlsym(openblas, "openblas_set_num_threads")) reinterpret_cast<SetThreads>(set)(1);
+        dlclose(openblas);  // CHOLMOD's own reference keeps it loaded
+      }
+    if (symbol) reinterpret_cast<SetThreads>(symbol)(1);
+  });
+}
+
 void start(cholmod_common& common) {
+  single_threaded_blas();
   cholmod_start(&common);
   common.supernodal = CHOLMOD_SUPERNODAL;
   common.nmethods = 1;
@@ -61,16 +87,55 @@ void CholmodFactor<Scalar>::analyse(const SparseMatrix& K) {
 
 template <class Scalar>
 bool CholmodFactor<Scalar>::factorise(const SparseMatrix& K) {
+  if (!L_) analyse(K);  // a real factor was turned into columns of our own below: supernodes again for this one
   cholmod_sparse A = view(K);
   const int ok = cholmod_factorize(&A, L_, &common_);
   if (!ok || common_.status != CHOLMOD_OK || L_->minor != L_->n) return false;
   // (min / max of diag L)² is the ratio of the smallest to the largest pivot of the LDLᴴ form
   const double ratio = cholmod_rcond(L_, &common_);
-  return std::isfinite(ratio) && ratio > 1e-12;
+  if (!(std::isfinite(ratio) && ratio > 1e-12)) return false;
+  if constexpr (std::is_same_v<Scalar, double>) {
+    // E^F's real L is factored once and solved every frame: as simplicial L D Lᵀ columns without the zeros of
+    // the supernodes' amalgamation, its two right-hand sides take one pass of ldl_substitution.hpp (at 1M
+    // triangles 89 ms against 104 with those zeros and 110 for CHOLMOD's supernodal solve, whose BLAS calls
+    // pack tiny blocks: bench_scale backend_solve/F)
+    if (!cholmod_change_factor(CHOLMOD_REAL, false, false, true, true, L_, &common_))
+      throw std::runtime_error("CHOLMOD's change of factor failed (status " + std::to_string(common_.status) + ")");
+    const auto n = static_cast<Eigen::Index>(L_->n);
+    const int* p = static_cast<const int*>(L_->p);
+    const int* i = static_cast<const int*>(L_->i);
+    const auto* x = static_cast<const double*>(L_->x);
+    columns_ = Columns{{0},
+                       {},
+                       {},
+                       Eigen::VectorXd(n),
+                       std::vector<int>(static_cast<const int*>(L_->Perm), static_cast<const int*>(L_->Perm) + n)};
+    columns_.row.reserve(static_cast<std::size_t>(p[n])), columns_.value.reserve(static_cast<std::size_t>(p[n]));
+    for (Eigen::Index j = 0; j < n; ++j) {
+      columns_.D[j] = x[p[j]];  // each column's diagonal first
+      for (int s = p[j] + 1; s < p[j + 1]; ++s)
+        if (x[s] != 0) columns_.row.push_back(i[s]), columns_.value.push_back(x[s]);
+      columns_.start.push_back(static_cast<int>(columns_.row.size()));
+    }
+    cholmod_free_factor(&L_, &common_);
+  }
+  return true;
 }
 
 template <class Scalar>
 void CholmodFactor<Scalar>::solve_in_place(Block& X) const {
+  if constexpr (std::is_same_v<Scalar, double>) {
+    if (!L_) {  // P x = L D Lᵀ Pᵀ x, perm[k] the unknown of pivot k
+      const std::vector<int>& perm = columns_.perm;
+      Block Y(X.rows(), X.cols());
+      for (Eigen::Index k = 0; k < X.rows(); ++k) Y.row(k) = X.row(perm[static_cast<std::size_t>(k)]);
+      ldl_solve_in_place(LdlColumns<double>{columns_.D.size(), columns_.start.data(), columns_.row.data(),
+                                            columns_.value.data(), 0, columns_.D.data()},
+                         Y);
+      for (Eigen::Index k = 0; k < X.rows(); ++k) X.row(perm[static_cast<std::size_t>(k)]) = Y.row(k);
+      return;
+    }
+  }
   cholmod_common common;
   start(common);
   Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> B = X;  // CHOLMOD's dense is column-major
@@ -94,14 +159,16 @@ template <class Scalar>
 std::unique_ptr<SparseFactor<Scalar>> CholmodFactor<Scalar>::clone() const {
   auto copy = std::make_unique<CholmodFactor>();
   if (L_) copy->L_ = cholmod_copy_factor(L_, &copy->common_);
+  copy->columns_ = columns_;
   return copy;
 }
 
 template <class Scalar>
 double CholmodFactor<Scalar>::factor_bytes() const {
-  if (!L_) return 0;
+  if (!L_) return static_cast<double>(columns_.value.size() * sizeof(double) + columns_.row.size() * sizeof(int));
   const double values = static_cast<double>(L_->is_super ? L_->xsize : L_->nzmax);
-  return values * static_cast<double>(sizeof(Scalar)) + static_cast<double>(L_->ssize) * sizeof(int);
+  const double indices = static_cast<double>(L_->is_super ? L_->ssize : L_->nzmax);
+  return values * static_cast<double>(sizeof(Scalar)) + indices * static_cast<double>(sizeof(int));
 }
 
 template class CholmodFactor<double>;

@@ -1,9 +1,13 @@
 #pragma once
 // The SparseFactor back-end on CHOLMOD's supernodal Cholesky LLᴴ (SuiteSparse), for large meshes
-// (sparse_factor.hpp). Ordering by AMD alone: METIS gained nothing on these planar meshes (issue 19).
+// (sparse_factor.hpp). Ordering by AMD: METIS cut the 1M-triangle factor's flops by half but took 3-4x AMD's
+// time to order (issue 19), more than the set-up's budget. A real factor, solved many times, is turned into
+// simplicial L D Lᵀ columns of its own after its factorisation and solved by ldl_substitution.hpp.
 #include "theory/global/sparse_factor.hpp"
 
 #include <cholmod.h>
+
+#include <vector>
 
 namespace affinterp::global {
 
@@ -19,6 +23,7 @@ class CholmodFactor final : public SparseFactor<Scalar> {
   CholmodFactor& operator=(const CholmodFactor&) = delete;
 
   void analyse(const SparseMatrix& K) override;
+  /// Supernodal; then, for a real K, simplicial L D Lᵀ columns (a second call analyses again).
   bool factorise(const SparseMatrix& K) override;
   /// Each call uses a cholmod_common of its own, so that calls on one factor may run concurrently.
   void solve_in_place(Block& X) const override;
@@ -29,6 +34,15 @@ class CholmodFactor final : public SparseFactor<Scalar> {
  private:
   cholmod_common common_;
   cholmod_factor* L_ = nullptr;
+  /// A real factor turned into simplicial L D Lᵀ columns of its own (factorise(); L_ is then null): L's
+  /// strictly lower entries by columns, the pivots, and the permutation (perm[k]: the unknown of pivot k).
+  struct Columns {
+    std::vector<int> start, row;
+    std::vector<double> value;
+    Eigen::VectorXd D;
+    std::vector<int> perm;
+  };
+  Columns columns_;
 };
 
 extern template class CholmodFactor<double>;

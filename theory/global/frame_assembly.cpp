@@ -1,6 +1,7 @@
 #include "theory/global/frame_assembly.hpp"
 
 #include "theory/global/hermitian_local_error.hpp"
+#include "theory/global/parallel_ranges.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -81,7 +82,8 @@ FrameAssembly::FrameAssembly(const Mesh& source, const Mesh& target, const Inter
       forward_(forward),
       reverse_(reverse),
       forward_terms_(triangle_terms(source, options)),
-      constraints_(std::move(constraints)) {
+      constraints_(std::move(constraints)),
+      stars_(vertex_stars(source.triangles, source.vertex_count())) {
   if (reverse_) reverse_terms_ = triangle_terms(target, options);
   isotropic_ =
       energy_ == Energy::frobenius ||
@@ -98,20 +100,36 @@ TriangleQuadratic<double> FrameAssembly::triangle_quadratic(Eigen::Index i, doub
 }
 
 void FrameAssembly::build_pattern() {
-  std::vector<Eigen::Triplet<std::complex<double>>> entries;
-  auto lower = [&](Eigen::Index row, Eigen::Index col) {
-    if (row >= col) entries.emplace_back(row, col, 0.0);
-  };
-  for (const TriangleTerm& term : forward_terms_)
-    for (const Eigen::Index k : term.vertex)
-      for (const Eigen::Index l : term.vertex) lower(k, l);
+  // Column l of the lower triangle: l itself and the vertices k > l that share a triangle of l's star or a
+  // sparse constraint term with it.
+  std::vector<std::pair<int, int>> coupled;  // (l, k), k > l, of the sparse constraint terms
   for (const ConstraintTerm& term : constraints_)
     if (!term.dense())
       for (const auto& [k, alpha_k] : term.coefficients)
-        for (const auto& [l, alpha_l] : term.coefficients) lower(k, l);
+        for (const auto& [l, alpha_l] : term.coefficients)
+          if (k > l) coupled.emplace_back(static_cast<int>(l), static_cast<int>(k));
+  std::sort(coupled.begin(), coupled.end());
+  std::vector<int> outer(static_cast<std::size_t>(n_) + 1, 0), inner, rows;
+  inner.reserve(4 * static_cast<std::size_t>(n_));
+  auto next_coupled = coupled.begin();
+  for (int l = 0; l < n_; ++l) {
+    rows.assign(1, l);
+    for (int s = stars_.start[static_cast<std::size_t>(l)]; s < stars_.start[static_cast<std::size_t>(l) + 1]; ++s)
+      for (const Eigen::Index k :
+           forward_terms_[static_cast<std::size_t>(stars_.triangle[static_cast<std::size_t>(s)])].vertex)
+        if (k > l) rows.push_back(static_cast<int>(k));
+    for (; next_coupled != coupled.end() && next_coupled->first == l; ++next_coupled)
+      rows.push_back(next_coupled->second);
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    inner.insert(inner.end(), rows.begin(), rows.end());
+    outer[static_cast<std::size_t>(l) + 1] = static_cast<int>(inner.size());
+  }
   pattern_.resize(n_, n_);
-  pattern_.setFromTriplets(entries.begin(), entries.end());
-  pattern_.makeCompressed();
+  pattern_.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
+  std::copy(outer.begin(), outer.end(), pattern_.outerIndexPtr());
+  std::copy(inner.begin(), inner.end(), pattern_.innerIndexPtr());
+  std::fill_n(pattern_.valuePtr(), inner.size(), std::complex<double>(0.0));
 
   auto slot = [&](Eigen::Index row, Eigen::Index col) -> int {
     const int* begin = pattern_.innerIndexPtr() + pattern_.outerIndexPtr()[col];
@@ -171,18 +189,38 @@ void FrameAssembly::matrix_at(double t, SparseMatrix& H) const {
     for (int s = H.outerIndexPtr()[0] + 1; s < H.outerIndexPtr()[1]; ++s) values[s] = 0.0;
 }
 
-Eigen::VectorXcd FrameAssembly::right_hand_side_at(double t) const {
+Eigen::VectorXcd FrameAssembly::right_hand_side_at(double t, std::size_t threads) const {
   Eigen::VectorXcd u = Eigen::VectorXcd::Zero(n_);
-  auto add = [&](const std::vector<TriangleTerm>& terms, const LocalPaths& paths, double s) {
-    if (energy_ != Energy::frobenius && energy_ != Energy::blend) return;  // E^R and E^S have no linear part
-    for (std::size_t i = 0; i < terms.size(); ++i) {
-      const Eigen::Vector3cd g = hermitian_frobenius_linear_term(terms[i].D, paths.at(static_cast<Eigen::Index>(i), s));
-      for (std::size_t c = 0; c < 3; ++c)
-        u[terms[i].vertex[c]] += terms[i].weight * terms[i].frobenius_share * g[static_cast<Eigen::Index>(c)];
-    }
-  };
-  add(forward_terms_, forward_, t);
-  if (reverse_) add(reverse_terms_, *reverse_, 1 - t);
+  if (energy_ == Energy::frobenius || energy_ == Energy::blend) {  // E^R and E^S have no linear part
+    // Each triangle's terms of ũ, then each vertex's sum over its star in triangle order (the order of a
+    // plain loop over the triangles): the same sums whatever the number of threads.
+    const std::size_t m = forward_terms_.size();
+    // kept by the calling thread from frame to frame (fresh pages for each frame cost page faults), and named
+    // by references that the threads below share (a thread_local's name means each thread's own)
+    thread_local std::vector<Eigen::Vector3cd> forward_kept, backward_kept;
+    std::vector<Eigen::Vector3cd>&forward = forward_kept, &backward = backward_kept;
+    forward.resize(m), backward.resize(reverse_ ? m : 0);
+    auto terms_of = [](const TriangleTerm& term, const Eigen::Matrix2d& A) -> Eigen::Vector3cd {
+      return term.weight * term.frobenius_share * hermitian_frobenius_linear_term(term.D, A);
+    };
+    for_each_range(m, threads, [&](std::size_t first, std::size_t last) {
+      for (std::size_t i = first; i < last; ++i) {
+        forward[i] = terms_of(forward_terms_[i], forward_.at(static_cast<Eigen::Index>(i), t));
+        if (reverse_) backward[i] = terms_of(reverse_terms_[i], reverse_->at(static_cast<Eigen::Index>(i), 1 - t));
+      }
+    });
+    for_each_range(static_cast<std::size_t>(n_), threads, [&](std::size_t first, std::size_t last) {
+      for (std::size_t k = first; k < last; ++k) {
+        std::complex<double> sum = 0;
+        for (const std::vector<Eigen::Vector3cd>* terms : {&forward, &backward})
+          if (!terms->empty())
+            for (int s = stars_.start[k]; s < stars_.start[k + 1]; ++s)
+              sum += (*terms)[static_cast<std::size_t>(stars_.triangle[static_cast<std::size_t>(s)])]
+                             [stars_.corner[static_cast<std::size_t>(s)]];
+        u[static_cast<Eigen::Index>(k)] = sum;
+      }
+    });
+  }
   for (const ConstraintTerm& term : constraints_) {  // c |Σ α_k z_k − r|²: linear part Re((−2 c α_k r)* z_k)
     const Eigen::Vector2d r = term.target(t);
     for (const auto& [k, alpha_k] : term.coefficients)

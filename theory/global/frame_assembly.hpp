@@ -15,6 +15,7 @@
 #include "theory/global/mesh.hpp"
 #include "theory/global/options.hpp"
 #include "theory/global/sparse_minimiser.hpp"
+#include "theory/global/vertex_stars.hpp"
 
 #include <Eigen/SparseCore>
 
@@ -51,8 +52,9 @@ class FrameAssembly {
   /// so (column 0's off-diagonal entries zero: sparse_minimiser.hpp), into the values of `H`, which has the
   /// structure of pattern(): one matrix serves every frame.
   void matrix_at(double t, SparseMatrix& H) const;
-  /// −ũ(t)/2, so that H z = −ũ/2 at the minimiser.
-  Eigen::VectorXcd right_hand_side_at(double t) const;
+  /// −ũ(t)/2, so that H z = −ũ/2 at the minimiser; computed on `threads` threads (the same vector whatever
+  /// their number: parallel_ranges.hpp).
+  Eigen::VectorXcd right_hand_side_at(double t, std::size_t threads = 1) const;
   /// The dense constraint term (the barycentre), which matrix_at leaves out, if there is one.
   const std::optional<DenseTerm>& dense_term() const { return dense_; }
 
@@ -73,6 +75,7 @@ class FrameAssembly {
   const LocalPaths* reverse_;
   std::vector<TriangleTerm> forward_terms_, reverse_terms_;
   std::vector<ConstraintTerm> constraints_;
+  VertexStars stars_;  ///< of the source's triangles (the same list as the target's)
   SparseMatrix pattern_;
   std::vector<int> triangle_slots_;      ///< per triangle, 9 slots into pattern_'s values (−1: upper half)
   std::vector<double> constant_values_;  ///< the sparse constraint terms (real)

@@ -4,6 +4,7 @@
 #include "theory/global/frame_assembly.hpp"
 #include "theory/global/local_paths.hpp"
 #include "theory/global/mesh_validation.hpp"
+#include "theory/global/parallel_ranges.hpp"
 #include "theory/global/rotation_branch.hpp"
 #include "theory/global/sparse_minimiser.hpp"
 #include "theory/global/well_posedness.hpp"
@@ -44,14 +45,19 @@ void require_valid_options(const InterpolationOptions& options, Eigen::Index tri
     throw RefusedProblem("blend weights w_i must lie in [0, 1]");
 }
 
+/// Triangles per thread below which the set-up's and a frame's loops stay on one thread.
+constexpr std::size_t triangles_per_thread = 1 << 15;
+
 std::vector<Eigen::Matrix2d> linear_parts(const Mesh& from, const Mesh& to) {
-  std::vector<Eigen::Matrix2d> A;
-  A.reserve(static_cast<std::size_t>(from.triangle_count()));
-  for (Eigen::Index i = 0; i < from.triangle_count(); ++i) {
-    Corners<double> p, q;
-    for (int c = 0; c < 3; ++c) p.col(c) = from.corner(i, c), q.col(c) = to.corner(i, c);
-    A.push_back(linear_part(p, q));
-  }
+  std::vector<Eigen::Matrix2d> A(static_cast<std::size_t>(from.triangle_count()));
+  for_each_range(A.size(), ranges_for(A.size(), triangles_per_thread), [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) {
+      Corners<double> p, q;
+      for (int c = 0; c < 3; ++c)
+        p.col(c) = from.corner(static_cast<Eigen::Index>(i), c), q.col(c) = to.corner(static_cast<Eigen::Index>(i), c);
+      A[i] = linear_part(p, q);
+    }
+  });
   return A;
 }
 
@@ -60,6 +66,10 @@ bool has_frobenius_part(const InterpolationOptions& options) {
   if (options.energy != Energy::blend) return false;
   return options.blend_weights.size() > 0 ? (options.blend_weights.array() > 0).any() : options.blend_weight > 0;
 }
+
+/// The factors of the batch call's workspaces together stay within this many bytes (a 1M-triangle mesh's
+/// batch within 2 GB: bench_scale).
+constexpr double workspace_bytes = 1.25 * 1073741824.0;
 
 }  // namespace
 
@@ -76,17 +86,21 @@ struct Interpolation::Engine {
   struct Workspace {
     FrameAssembly::SparseMatrix H;
     SparseMinimiser<std::complex<double>> minimiser;
+    std::mutex mutex;  ///< held by the one call computing a frame in it
+    Workspace(FrameAssembly::SparseMatrix matrix, SparseMinimiser<std::complex<double>> factored)
+        : H(std::move(matrix)), minimiser(std::move(factored)) {}
+    Workspace(const Workspace& other) : H(other.H), minimiser(other.minimiser) {}
   };
-  /// The workspace of vertices_at(t): the only state a frame changes, hence mutable, and guarded so that
-  /// the const vertices_at is safe to call concurrently. The batch call copies it, one per worker.
-  struct PerFrame : Workspace {
-    std::mutex mutex;
-  };
-  mutable PerFrame per_frame;
+  /// The frames' workspaces: [0] that of vertices_at(t), [0, W) those of the batch call's W workers, kept
+  /// for the next batch. They are the only state a frame changes, hence mutable; each is guarded by its
+  /// mutex, the list by its own.
+  mutable std::vector<std::unique_ptr<Workspace>> workspaces;
+  mutable std::mutex workspaces_mutex;
 
-  /// v(t) at a t in range, when H is fixed: L [x y] = [Re b, Im b], both columns in one solve.
-  Eigen::Matrix2Xd isotropic_frame(double t) const {
-    const Eigen::VectorXcd b = assembly->right_hand_side_at(t);  // H z = −ũ/2 (hermitian_form.hpp)
+  /// v(t) at a t in range, when H is fixed: L [x y] = [Re b, Im b], both columns in one solve; the
+  /// right-hand side on `threads` threads.
+  Eigen::Matrix2Xd isotropic_frame(double t, std::size_t threads) const {
+    const Eigen::VectorXcd b = assembly->right_hand_side_at(t, threads);  // H z = −ũ/2 (hermitian_form.hpp)
     Eigen::MatrixXd xy(b.size(), 2);
     xy << b.real(), b.imag();
     return fixed.solve(xy).transpose();
@@ -99,6 +113,14 @@ struct Interpolation::Engine {
     Eigen::Matrix2Xd v(2, z.size());
     v << z.real().transpose(), z.imag().transpose();  // z_k = v_kx + i v_ky
     return v;
+  }
+  /// At least `count` workspaces, the new ones copies of the first.
+  void reserve_workspaces(std::size_t count) const {
+    const std::lock_guard lock(workspaces_mutex);
+    while (workspaces.size() < count) {
+      const std::lock_guard first(workspaces.front()->mutex);
+      workspaces.push_back(std::make_unique<Workspace>(*workspaces.front()));
+    }
   }
   template <class Scalar>
   void analyse(SparseMinimiser<Scalar>& minimiser, const Eigen::SparseMatrix<Scalar>& K) const {
@@ -113,10 +135,9 @@ struct Interpolation::Engine {
                               std::to_string(options.t_begin) + ", " + std::to_string(options.t_end) + "]");
   }
 
-  Engine(const Mesh& source, const Mesh& target, InterpolationOptions opts, Eigen::VectorXd angles)
-      : options(std::move(opts)),
-        theta(std::move(angles)),
-        forward(linear_parts(source, target), options.homotopy, theta) {
+  Engine(const Mesh& source, const Mesh& target, InterpolationOptions opts, const std::vector<Eigen::Matrix2d>& A,
+         Eigen::VectorXd angles)
+      : options(std::move(opts)), theta(std::move(angles)), forward(A, options.homotopy, theta) {
     if (options.symmetric) reverse.emplace(linear_parts(target, source), options.homotopy, -theta);
     auto terms = constraint_terms(options.constraints, source, target, forward);
     require_well_posed(source, terms, !has_frobenius_part(options), "E^" + to_string(options.energy));
@@ -129,9 +150,10 @@ struct Interpolation::Engine {
       analyse(fixed, L);
       fixed.factorise(L);
     } else {
-      analyse(per_frame.minimiser, H);
-      per_frame.minimiser.factorise(H);
-      per_frame.H = std::move(H);
+      SparseMinimiser<std::complex<double>> minimiser;
+      analyse(minimiser, H);
+      minimiser.factorise(H);
+      workspaces.push_back(std::make_unique<Workspace>(std::move(H), std::move(minimiser)));
     }
   }
 };
@@ -141,9 +163,11 @@ Interpolation::Interpolation(const Mesh& source, const Mesh& target, Interpolati
   require_valid_options(options, source.triangle_count());
   const std::vector<Eigen::Matrix2d> A = linear_parts(source, target);
   Eigen::VectorXd theta(static_cast<Eigen::Index>(A.size()));
-  for (std::size_t i = 0; i < A.size(); ++i) theta[static_cast<Eigen::Index>(i)] = principal_polar_angle(A[i]);
+  for_each_range(A.size(), ranges_for(A.size(), triangles_per_thread), [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) theta[static_cast<Eigen::Index>(i)] = principal_polar_angle(A[i]);
+  });
   if (options.rotation_branch == RotationBranch::consistent) theta = consistent_angles(source.triangles, theta);
-  engine_ = std::make_unique<Engine>(source, target, std::move(options), std::move(theta));
+  engine_ = std::make_unique<Engine>(source, target, std::move(options), A, std::move(theta));
 }
 
 Interpolation::~Interpolation() = default;
@@ -151,11 +175,14 @@ Interpolation::Interpolation(Interpolation&&) noexcept = default;
 Interpolation& Interpolation::operator=(Interpolation&&) noexcept = default;
 
 Eigen::Matrix2Xd Interpolation::vertices_at(double t) const {
-  const Engine& engine = *engine_;  // const all through, but for the per-frame workspace
+  const Engine& engine = *engine_;  // const all through, but for the frames' workspaces
   engine.require_in_range(t);
-  if (engine.assembly->isotropic()) return engine.isotropic_frame(t);
-  const std::lock_guard lock(engine.per_frame.mutex);
-  return engine.frame_in(engine.per_frame, t);
+  if (engine.assembly->isotropic())
+    return engine.isotropic_frame(
+        t, ranges_for(static_cast<std::size_t>(engine.assembly->pattern().rows()), triangles_per_thread / 2));
+  Engine::Workspace& work = *engine.workspaces.front();
+  const std::lock_guard lock(work.mutex);
+  return engine.frame_in(work, t);
 }
 
 std::vector<Eigen::Matrix2Xd> Interpolation::vertices_at(const std::vector<double>& times) const {
@@ -164,22 +191,20 @@ std::vector<Eigen::Matrix2Xd> Interpolation::vertices_at(const std::vector<doubl
   std::vector<Eigen::Matrix2Xd> frames(times.size());
   const bool isotropic = engine.assembly->isotropic();
   std::size_t workers = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), times.size());
-  if (!isotropic) {  // a factor per worker, within 1 GiB
-    const double bytes = std::max(1.0, engine.per_frame.minimiser.factor().factor_bytes());
-    workers = std::min(workers, static_cast<std::size_t>(std::max(1.0, std::floor(1073741824.0 / bytes))));
+  if (!isotropic) {  // a workspace per worker, their factors within workspace_bytes
+    const double bytes = std::max(1.0, engine.workspaces.front()->minimiser.factor().factor_bytes());
+    workers = std::min(workers, static_cast<std::size_t>(std::max(1.0, std::floor(workspace_bytes / bytes))));
+    engine.reserve_workspaces(workers);
   }
   std::atomic<std::size_t> next{0};
   std::exception_ptr failure;
   std::mutex failure_mutex;
-  auto work = [&] {
+  auto work = [&](std::size_t w) {  // worker w takes the next frame, in workspace w
     try {
-      std::optional<Engine::Workspace> own;
-      if (!isotropic) {
-        const std::lock_guard lock(engine.per_frame.mutex);
-        own.emplace(engine.per_frame);
-      }
+      std::unique_lock<std::mutex> lock;
+      if (!isotropic) lock = std::unique_lock(engine.workspaces[w]->mutex);
       for (std::size_t k; (k = next++) < times.size();)
-        frames[k] = isotropic ? engine.isotropic_frame(times[k]) : engine.frame_in(*own, times[k]);
+        frames[k] = isotropic ? engine.isotropic_frame(times[k], 1) : engine.frame_in(*engine.workspaces[w], times[k]);
     } catch (...) {
       const std::lock_guard lock(failure_mutex);
       if (!failure) failure = std::current_exception();
@@ -187,8 +212,8 @@ std::vector<Eigen::Matrix2Xd> Interpolation::vertices_at(const std::vector<doubl
     }
   };
   std::vector<std::thread> threads;
-  for (std::size_t w = 1; w < workers; ++w) threads.emplace_back(work);
-  work();
+  for (std::size_t w = 1; w < workers; ++w) threads.emplace_back(work, w);
+  if (workers > 0) work(0);
   for (std::thread& thread : threads) thread.join();
   if (failure) std::rethrow_exception(failure);
   return frames;

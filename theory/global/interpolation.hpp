@@ -39,12 +39,14 @@ class Interpolation {
   /// \note const as in the standard library: no visible change, and safe to call from several threads on
   /// one object. When G depends on t (factored_once() is false) each call refactorises G(t) in one
   /// workspace that the object keeps for its frames, behind a mutex: concurrent calls on one object take
-  /// turns; the batch call below computes frames in parallel.
+  /// turns; the batch call below computes frames in parallel. On large meshes the frame's own loops use
+  /// the hardware threads (the same vertices whatever their number).
   Eigen::Matrix2Xd vertices_at(double t) const;
   /// v(t) for each of `times`, in their order: the same vertices as vertices_at(t) one after another,
   /// computed in parallel by one worker per hardware thread. When G depends on t each worker refactorises
-  /// in a workspace of its own (no mutex), as many workers as keep their factors within 1 GiB. Throws as
-  /// vertices_at(t) does; a time out of range before any frame is computed.
+  /// in a workspace of its own, as many workers as keep their factors within 1.25 GiB together; the object
+  /// keeps the workspaces for its next batch. Throws as vertices_at(t) does; a time out of range before any
+  /// frame is computed.
   std::vector<Eigen::Matrix2Xd> vertices_at(const std::vector<double>& times) const;
 
   /// The global error function E_t (Kaji §4; E′(t) when symmetrised) that vertices_at(t) minimises, at the

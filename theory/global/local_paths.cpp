@@ -1,14 +1,16 @@
 #include "theory/global/local_paths.hpp"
 
+#include "theory/global/parallel_ranges.hpp"
+
 #include <cmath>
+#include <stdexcept>
 
 namespace affinterp::global {
 
 double principal_polar_angle(const Eigen::Matrix2d& A) { return local::polar_decomposition<double>(A).theta; }
 
 LocalPaths::LocalPaths(const std::vector<Eigen::Matrix2d>& A, LocalHomotopy homotopy, const Eigen::VectorXd& theta) {
-  paths_.reserve(A.size());
-  for (std::size_t i = 0; i < A.size(); ++i) {
+  auto path_of = [&](std::size_t i) -> Path {
     const local::Polar<double> polar = local::polar_decomposition<double>(A[i]);
     const double branch = theta[static_cast<Eigen::Index>(i)];  // polar.theta + 2πk
     switch (homotopy) {
@@ -17,23 +19,25 @@ LocalPaths::LocalPaths(const std::vector<Eigen::Matrix2d>& A, LocalHomotopy homo
         const double beta = path.S_eigen.beta;
         const Eigen::Matrix2d N = local::rotation<double>(-beta) * (Eigen::Matrix2d() << 1, 0, 0, -1).finished() *
                                   local::rotation<double>(beta);
-        paths_.emplace_back(ExpPath{branch, std::log(path.S_eigen.x), std::log(path.S_eigen.y), N});
-        break;
+        return ExpPath{branch, std::log(path.S_eigen.x), std::log(path.S_eigen.y), N};
       }
       case LocalHomotopy::polar:  // A^P(t) = R_{tθ}((1−t)I + tS), Kaji eq. (2)
-        paths_.emplace_back(local::PolarHomotopy<double>{branch, polar.S});
-        break;
+        return local::PolarHomotopy<double>{branch, polar.S};
       case LocalHomotopy::linear:  // (1−t)I + tA: no angle, so no branch
-        paths_.emplace_back(local::LinearHomotopy<double>{A[i]});
-        break;
+        return local::LinearHomotopy<double>{A[i]};
       case LocalHomotopy::svd: {  // A = R_α D R_β with α + β = principal θ: move α to the branch
         local::Svd<double> decomposition = local::svd<double>(A[i]);
         decomposition.alpha += branch - polar.theta;
-        paths_.emplace_back(local::SvdHomotopy<double>{decomposition});
-        break;
+        return local::SvdHomotopy<double>{decomposition};
       }
     }
-  }
+    throw std::invalid_argument("unknown local homotopy");
+  };
+  paths_.resize(A.size());
+  // each triangle's path on its own: split over threads for large meshes (parallel_ranges.hpp)
+  for_each_range(paths_.size(), ranges_for(paths_.size(), 1 << 15), [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) paths_[i] = path_of(i);
+  });
 }
 
 Eigen::Matrix2d LocalPaths::ExpPath::operator()(double t) const {

@@ -8,10 +8,19 @@
 
 #include <Eigen/Core>
 
+#include <vector>
+
 namespace affinterp::global {
 
-/// Triangles sharing an edge with each triangle (the dual graph), as adjacency lists.
-std::vector<std::vector<Eigen::Index>> dual_graph(const Eigen::Matrix3Xi& triangles);
+/// The triangles sharing an edge with each triangle (the dual graph): those of triangle i are
+/// neighbour[start[i]] … neighbour[start[i + 1] − 1], ordered by the shared edge's (lower, higher) vertex pair,
+/// then by index.
+struct DualGraph {
+  std::vector<int> start, neighbour;
+};
+
+/// The dual graph of a well-formed triangle list (mesh_validation.hpp).
+DualGraph dual_graph(const Eigen::Matrix3Xi& triangles);
 
 /// The branches θ_i + 2πk_i of the principal angles `principal` chosen breadth-first as above.
 Eigen::VectorXd consistent_angles(const Eigen::Matrix3Xi& triangles, const Eigen::VectorXd& principal);

@@ -1,5 +1,7 @@
 #include "theory/global/simplicial_factor.hpp"
 
+#include "theory/global/ldl_substitution.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -42,12 +44,9 @@ template <class Scalar>
 void SimplicialFactor<Scalar>::solve_in_place(Block& X) const {
   const SparseMatrix& L = ldlt_.matrixL().nestedExpression();  // unit lower triangle, diagonal not stored
   Block Y = ldlt_.permutationP() * X;
-  for (Eigen::Index j = 0; j < L.outerSize(); ++j)  // L y = P x
-    for (typename SparseMatrix::InnerIterator it(L, j); it; ++it) Y.row(it.index()) -= it.value() * Y.row(j);
-  Y.array().colwise() /= ldlt_.vectorD().array();
-  for (Eigen::Index j = L.outerSize() - 1; j >= 0; --j)  // Lᴴ w = D⁻¹ y
-    for (typename SparseMatrix::InnerIterator it(L, j); it; ++it)
-      Y.row(j) -= Eigen::numext::conj(it.value()) * Y.row(it.index());
+  ldl_solve_in_place(
+      LdlColumns<Scalar>{L.outerSize(), L.outerIndexPtr(), L.innerIndexPtr(), L.valuePtr(), 0, ldlt_.vectorD().data()},
+      Y);
   X = ldlt_.permutationPinv() * Y;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // The SparseFactor back-end on Eigen's SimplicialLDLT (sparse_factor.hpp), with a solve that carries all
-// right-hand sides through one pass over L: P x = L D Lᴴ Pᵀ x, forward, diagonal, backward.
+// right-hand sides through one pass over L: P x = L D Lᴴ Pᵀ x, forward, diagonal, backward (ldl_substitution.hpp).
 #include "theory/global/sparse_factor.hpp"
 
 #include <Eigen/SparseCholesky>

@@ -19,8 +19,8 @@ bool has_cholmod() {
 
 template <class Scalar>
 std::unique_ptr<SparseFactor<Scalar>> make_sparse_factor(Eigen::Index unknowns) {
-  return make_sparse_factor<Scalar>(has_cholmod() && unknowns >= cholmod_from_unknowns ? SparseBackEnd::cholmod
-                                                                                       : SparseBackEnd::simplicial);
+  return make_sparse_factor<Scalar>(
+      has_cholmod() && unknowns >= cholmod_from_unknowns<Scalar> ? SparseBackEnd::cholmod : SparseBackEnd::simplicial);
 }
 
 template <class Scalar>

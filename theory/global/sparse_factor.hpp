@@ -2,12 +2,11 @@
 // A sparse LDLᴴ (or LLᴴ) factorisation of a Hermitian positive definite K (real symmetric, or complex
 // Hermitian for the complex form of hermitian_form.hpp), behind one interface so that the minimiser does
 // not know which back-end it holds:
-//   - Eigen's SimplicialLDLT (always available): the faster one on small meshes, where the supernodes
-//     stay too small for BLAS-3 kernels to pay (octopus, 34,458 unknowns: numeric factorisation 23 ms
-//     against 63–72 ms for CHOLMOD's supernodal LLᴴ, see hermitian_form.hpp);
-//   - CHOLMOD's supernodal Cholesky (SuiteSparse; built in when CMake finds it, AFFINTERP_HAS_CHOLMOD),
-//     3–4× faster to factor from about half a million triangles on (issue 19: 725 × 725 grid, 1.05 M
-//     triangles, 2 cores: real 1.5–1.9 s against 5.8 s, complex 2.8 s against 10.3 s).
+//   - Eigen's SimplicialLDLT (always available): the faster one to factorise on small meshes, where the
+//     supernodes stay too small for BLAS-3 kernels to pay;
+//   - CHOLMOD's supernodal Cholesky (SuiteSparse; built in when CMake finds it, AFFINTERP_HAS_CHOLMOD), on
+//     an optimised BLAS (experiments/setup.sh installs OpenBLAS) 1.7-1.8x faster to factorise at 1M
+//     triangles (cholmod_from_unknowns).
 // The symbolic analysis (fill-reducing ordering, elimination tree or supernodes) is done once for the
 // pattern and reused by every numeric factorisation.
 #include "theory/global/options.hpp"
@@ -17,6 +16,7 @@
 
 #include <complex>
 #include <memory>
+#include <type_traits>
 
 namespace affinterp::global {
 
@@ -43,14 +43,23 @@ class SparseFactor {
   virtual double factor_bytes() const = 0;
 };
 
-/// Unknowns from which CHOLMOD's supernodal factor is chosen when it is built in (measured on this
-/// machine kind by bench_scale's scale_backend benchmarks, see experiments/apps/bench/bench_scale.cpp).
-inline constexpr Eigen::Index cholmod_from_unknowns = 100'000;
+/// Unknowns (vertices) from which CHOLMOD's supernodal factor is chosen when it is built in, set from bench_scale's
+/// backend_factor and backend_solve (the man from 1k to 1M triangles; AMD EPYC, 2 cores, OpenBLAS 0.3.21 on one
+/// thread; CPU time of the one working thread, measured under a load of 4-9 on 2026-11-26):
+///  - real systems, E^F's L, factored once and solved every frame: both back-ends solve alike (CHOLMOD's factor
+///    is turned into the same kind of columns, cholmod_factor.hpp: 2.0 ms at 33k unknowns, 84-85 ms at 525k),
+///    and CHOLMOD's factorisation and that turn cost less from about 210k unknowns (132k: 197 ms against 149;
+///    525k: 1094 against 1852): 200,000;
+///  - complex systems, refactorised every frame (E^R, E^S, blends): a factorisation and a solve cost less with
+///    CHOLMOD from about 100k unknowns (33k: 37 + 6.7 ms against 25 + 3.2; 132k: 221 + 35 against 243 + 25;
+///    525k: 1755 + 166 against 3167 + 144): 100,000.
+template <class Scalar>
+inline constexpr Eigen::Index cholmod_from_unknowns = std::is_same_v<Scalar, double> ? 200'000 : 100'000;
 
 /// Whether this build has the CHOLMOD back-end.
 bool has_cholmod();
 
-/// The back-end for `unknowns` unknowns: CHOLMOD from cholmod_from_unknowns on when built in, else Eigen's.
+/// The back-end for `unknowns` unknowns: CHOLMOD from cholmod_from_unknowns<Scalar> on when built in, else Eigen's.
 template <class Scalar>
 std::unique_ptr<SparseFactor<Scalar>> make_sparse_factor(Eigen::Index unknowns);
 /// The named back-end (for benchmarks comparing them); std::invalid_argument if it is not built in.

@@ -6,7 +6,7 @@ namespace affinterp::bench {
 
 void add_machine_context() {
   const nlohmann::json environment = environment_description();
-  for (const char* key : {"cpu", "compiler", "flags", "eigen", "os"})
+  for (const char* key : {"cpu", "compiler", "flags", "eigen", "os", "blas"})
     benchmark::AddCustomContext(std::string("affinterp_") + key, environment.at(key).get<std::string>());
   benchmark::AddCustomContext("affinterp_cpu_flags", cpu_flags());
 }

@@ -17,16 +17,24 @@
 #include "experiments/inputs/shapes/curl.hpp"
 #include "experiments/inputs/shapes/man.hpp"
 #include "experiments/inputs/shapes/subdivide.hpp"
+#include "theory/global/constraint_terms.hpp"
+#include "theory/global/frame_assembly.hpp"
 #include "theory/global/gauge.hpp"
 #include "theory/global/interpolation.hpp"
+#include "theory/global/local_paths.hpp"
+#include "theory/global/rotation_branch.hpp"
 #include "theory/global/sparse_factor.hpp"
 
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
+#include <cmath>
+#include <complex>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace affinterp {
@@ -34,20 +42,24 @@ namespace {
 
 using global::Energy;
 
-/// The curled man, subdivided `levels` times; built once per level.
-const shapes::MeshPairShapes& workload(int levels) {
-  static std::vector<shapes::MeshPairShapes> pairs = [] {
-    shapes::MeshPairShapes pair{shapes::man(0.0137), {}};
-    const Eigen::Vector2d low = pair.source.vertices.rowwise().minCoeff(),
-                          high = pair.source.vertices.rowwise().maxCoeff();
-    const Eigen::Vector2d centre_left(low.x(), (low.y() + high.y()) / 2);
-    pair.target = pair.source;
-    pair.target.vertices = shapes::Curl{high.x() - low.x(), 1.0, 1}.apply(
-        Eigen::Matrix2Xd(pair.source.vertices.colwise() - centre_left), 1);
-    return std::vector{pair};
-  }();
-  while (static_cast<int>(pairs.size()) <= levels) pairs.push_back(shapes::subdivided(pairs.back()));
-  return pairs[static_cast<std::size_t>(levels)];
+/// The ladder of sizes: level 0 is the man meshed with edges ≤ 0.0137 (65,326 triangles), a negative level
+/// the man meshed with edges 2^−level times as long (about 4^level times the triangles: ~1k, 4k, 16k), a
+/// positive one level 0 subdivided `level` times (261,304 and 1,045,216 triangles).
+constexpr int coarsest_level = -3, finest_level = 2;
+
+/// The man at `level`, bent by a circular curl through one radian along its width; built once per level.
+const shapes::MeshPairShapes& workload(int level) {
+  static std::map<int, shapes::MeshPairShapes> pairs;
+  if (const auto found = pairs.find(level); found != pairs.end()) return found->second;
+  if (level > 0) return pairs[level] = shapes::subdivided(workload(level - 1));
+  shapes::MeshPairShapes pair{shapes::man(0.0137 * std::ldexp(1.0, -level)), {}};
+  const Eigen::Vector2d low = pair.source.vertices.rowwise().minCoeff(),
+                        high = pair.source.vertices.rowwise().maxCoeff();
+  const Eigen::Vector2d centre_left(low.x(), (low.y() + high.y()) / 2);
+  pair.target = pair.source;
+  pair.target.vertices =
+      shapes::Curl{high.x() - low.x(), 1.0, 1}.apply(Eigen::Matrix2Xd(pair.source.vertices.colwise() - centre_left), 1);
+  return pairs[level] = std::move(pair);
 }
 
 global::InterpolationOptions options_for(Energy energy, const shapes::MeshPairShapes& pair,
@@ -81,8 +93,8 @@ void report(benchmark::State& state, const shapes::MeshPairShapes& pair, bool pe
   state.SetLabel(peak_is_own ? "peak of this benchmark" : "peak of the process so far");
 }
 
-void set_up(benchmark::State& state, Energy energy, int levels, std::optional<global::SparseBackEnd> back_end) {
-  const shapes::MeshPairShapes& pair = workload(levels);
+void set_up(benchmark::State& state, Energy energy, int level, std::optional<global::SparseBackEnd> back_end) {
+  const shapes::MeshPairShapes& pair = workload(level);
   const global::InterpolationOptions options = options_for(energy, pair, back_end);
   const bool own = reset_peak_memory();
   for (auto _ : state) {
@@ -92,8 +104,8 @@ void set_up(benchmark::State& state, Energy energy, int levels, std::optional<gl
   report(state, pair, own);
 }
 
-void frame(benchmark::State& state, Energy energy, int levels, std::optional<global::SparseBackEnd> back_end) {
-  const shapes::MeshPairShapes& pair = workload(levels);
+void frame(benchmark::State& state, Energy energy, int level, std::optional<global::SparseBackEnd> back_end) {
+  const shapes::MeshPairShapes& pair = workload(level);
   const global::InterpolationOptions options = options_for(energy, pair, back_end);
   const bool own = reset_peak_memory();
   const global::Interpolation interpolation(pair.source, pair.target, options);
@@ -106,8 +118,8 @@ void frame(benchmark::State& state, Energy energy, int levels, std::optional<glo
 }
 
 /// 8 frames per iteration through vertices_at(times); time per frame = iteration time / 8.
-void frames_batched(benchmark::State& state, Energy energy, int levels, std::optional<global::SparseBackEnd> back_end) {
-  const shapes::MeshPairShapes& pair = workload(levels);
+void frames_batched(benchmark::State& state, Energy energy, int level, std::optional<global::SparseBackEnd> back_end) {
+  const shapes::MeshPairShapes& pair = workload(level);
   const global::InterpolationOptions options = options_for(energy, pair, back_end);
   const bool own = reset_peak_memory();
   const global::Interpolation interpolation(pair.source, pair.target, options);
@@ -122,29 +134,104 @@ void frames_batched(benchmark::State& state, Energy energy, int levels, std::opt
   report(state, pair, own);
 }
 
+/// The sparse system of a frame as the engine builds it (FrameAssembly): E^F's real L (the real part of
+/// H, factored once), E^R's complex Hermitian H(½); both grounded at vertex 0 for the barycentre.
+template <class Scalar>
+Eigen::SparseMatrix<Scalar> frame_matrix(int level) {
+  const shapes::MeshPairShapes& pair = workload(level);
+  const Energy energy = std::is_same_v<Scalar, double> ? Energy::frobenius : Energy::similarity;
+  const global::InterpolationOptions options = options_for(energy, pair, std::nullopt);
+  std::vector<Eigen::Matrix2d> A;
+  Eigen::VectorXd theta(pair.source.triangle_count());
+  for (Eigen::Index i = 0; i < pair.source.triangle_count(); ++i) {
+    global::Corners<double> p, q;
+    for (int c = 0; c < 3; ++c) p.col(c) = pair.source.corner(i, c), q.col(c) = pair.target.corner(i, c);
+    A.push_back(global::linear_part(p, q));
+    theta[i] = global::principal_polar_angle(A.back());
+  }
+  const global::LocalPaths paths(A, options.homotopy, global::consistent_angles(pair.source.triangles, theta));
+  const global::FrameAssembly assembly(pair.source, pair.target, options, paths, nullptr,
+                                       global::constraint_terms(options.constraints, pair.source, pair.target, paths));
+  global::FrameAssembly::SparseMatrix H = assembly.pattern();
+  assembly.matrix_at(0.5, H);
+  if constexpr (std::is_same_v<Scalar, double>) {
+    Eigen::SparseMatrix<double> L = H.real();
+    L.makeCompressed();
+    return L;
+  } else {
+    return H;
+  }
+}
+
+/// One numeric factorisation on the named back-end (the symbolic analysis outside the timing).
+template <class Scalar>
+void backend_factor(benchmark::State& state, int level, global::SparseBackEnd back_end) {
+  const Eigen::SparseMatrix<Scalar> K = frame_matrix<Scalar>(level);
+  const auto factor = global::make_sparse_factor<Scalar>(back_end);
+  for (auto _ : state) {
+    state.PauseTiming();
+    factor->analyse(K);  // afresh: CHOLMOD turns a real factor into columns of its own (cholmod_factor.hpp)
+    state.ResumeTiming();
+    benchmark::DoNotOptimize(factor->factorise(K));
+  }
+  state.counters["unknowns"] = static_cast<double>(K.rows());
+  state.counters["factor_MB"] = factor->factor_bytes() / 1e6;
+  state.counters["triangles"] = static_cast<double>(workload(level).source.triangle_count());
+}
+
+/// One solve of a frame's right-hand sides: E^F's two real columns (x and y), E^R's one complex column.
+template <class Scalar>
+void backend_solve(benchmark::State& state, int level, global::SparseBackEnd back_end) {
+  const Eigen::SparseMatrix<Scalar> K = frame_matrix<Scalar>(level);
+  const auto factor = global::make_sparse_factor<Scalar>(back_end);
+  factor->analyse(K);
+  if (!factor->factorise(K)) state.SkipWithError("not positive definite");
+  using Block = typename global::SparseFactor<Scalar>::Block;
+  const Block B = Block::Ones(K.rows(), std::is_same_v<Scalar, double> ? 2 : 1);
+  for (auto _ : state) {
+    Block X = B;
+    factor->solve_in_place(X);
+    benchmark::DoNotOptimize(X.data());
+  }
+  state.counters["unknowns"] = static_cast<double>(K.rows());
+  state.counters["triangles"] = static_cast<double>(workload(level).source.triangle_count());
+}
+
+/// Three repetitions of at least half a second each (one iteration at 1M): the machine is shared.
+void repeated(benchmark::internal::Benchmark* b) {
+  b->Unit(benchmark::kMillisecond)->MinTime(0.5)->Repetitions(3)->ReportAggregatesOnly(true);
+}
+
 void register_all() {
-  std::vector<std::optional<global::SparseBackEnd>> back_ends = {std::nullopt, global::SparseBackEnd::simplicial};
+  std::vector<global::SparseBackEnd> back_ends = {global::SparseBackEnd::simplicial};
   if (global::has_cholmod()) back_ends.push_back(global::SparseBackEnd::cholmod);
-  for (int levels = 0; levels <= 2; ++levels) {
-    const std::string size = std::to_string(workload(levels).source.triangle_count());
-    for (const Energy energy : {Energy::frobenius, Energy::similarity})
-      for (const std::optional<global::SparseBackEnd> back_end : back_ends) {
-        const std::string name = global::to_string(energy) + "/" + size;
-        const std::string prefix = back_end ? "backend_" : "scale_";
-        const std::string suffix = !back_end                                     ? ""
-                                   : *back_end == global::SparseBackEnd::cholmod ? "/cholmod"
-                                                                                 : "/simplicial";
-        std::vector<std::pair<std::string, decltype(&frame)>> kinds = {{prefix + "setup/", set_up},
-                                                                       {prefix + "frame/", frame}};
-        if (!back_end) kinds.emplace_back("batch_frames/", frames_batched);
-        // three repetitions of at least half a second each (one iteration at 1M): the machine is shared
-        for (const auto& [kind, function] : kinds)
-          benchmark::RegisterBenchmark((kind + name + suffix).c_str(), function, energy, levels, back_end)
-              ->Unit(benchmark::kMillisecond)
-              ->MinTime(0.5)
-              ->Repetitions(3)
-              ->ReportAggregatesOnly(true);
+  for (int level = coarsest_level; level <= finest_level; ++level) {
+    const std::string size = std::to_string(workload(level).source.triangle_count());
+    for (const Energy energy : {Energy::frobenius, Energy::similarity}) {
+      const std::string name = global::to_string(energy) + "/" + size;
+      benchmark::RegisterBenchmark(("scale_setup/" + name).c_str(), set_up, energy, level, std::nullopt)
+          ->Apply(repeated);
+      benchmark::RegisterBenchmark(("scale_frame/" + name).c_str(), frame, energy, level, std::nullopt)
+          ->Apply(repeated);
+      benchmark::RegisterBenchmark(("batch_frames/" + name).c_str(), frames_batched, energy, level, std::nullopt)
+          ->Apply(repeated);
+      for (const global::SparseBackEnd back_end : back_ends) {
+        const std::string suffix = back_end == global::SparseBackEnd::cholmod ? "/cholmod" : "/simplicial";
+        benchmark::RegisterBenchmark(("backend_setup/" + name + suffix).c_str(), set_up, energy, level, back_end)
+            ->Apply(repeated);
+        benchmark::RegisterBenchmark(("backend_frame/" + name + suffix).c_str(), frame, energy, level, back_end)
+            ->Apply(repeated);
+        const bool real = energy == Energy::frobenius;
+        benchmark::RegisterBenchmark(("backend_factor/" + name + suffix).c_str(),
+                                     real ? backend_factor<double> : backend_factor<std::complex<double>>, level,
+                                     back_end)
+            ->Apply(repeated);
+        benchmark::RegisterBenchmark(("backend_solve/" + name + suffix).c_str(),
+                                     real ? backend_solve<double> : backend_solve<std::complex<double>>, level,
+                                     back_end)
+            ->Apply(repeated);
       }
+    }
   }
 }
 

@@ -1,0 +1,18 @@
+#pragma once
+// Work over the triangles or vertices of a large mesh split into contiguous ranges, one thread each: the
+// engine's per-frame loops whose items write disjoint outputs, so that the result is the same whatever the
+// number of threads.
+#include <cstddef>
+#include <functional>
+
+namespace affinterp::global {
+
+/// Calls body(first, last) on the `ranges` contiguous ranges of [0, count), each on a thread of its own
+/// (the first on the caller's), and returns when all are done; rethrows the first exception.
+void for_each_range(std::size_t count, std::size_t ranges, const std::function<void(std::size_t, std::size_t)>& body);
+
+/// The ranges worth a thread each for `count` items of similar cost: one per hardware thread, each of at least
+/// `grain` items (so that small meshes stay on the caller's thread).
+std::size_t ranges_for(std::size_t count, std::size_t grain);
+
+}  // namespace affinterp::global
