@@ -8,15 +8,13 @@
 // refactorises from scratch every frame (symbolic + numeric, as common public implementations do),
 // measured in the same run; batch_frames/<energy> computes 8 frames at once (vertices_at(times)).
 #include "experiments/apps/bench/bench_context.hpp"
+#include "experiments/apps/bench/engine_bench.hpp"
 #include "experiments/inputs/mesh_file.hpp"
 #include "experiments/inputs/shapes/curl.hpp"
 #include "experiments/inputs/shapes/man.hpp"
-#include "theory/global/constraint_terms.hpp"
 #include "theory/global/frame_assembly.hpp"
 #include "theory/global/hermitian_form.hpp"
 #include "theory/global/interpolation.hpp"
-#include "theory/global/local_paths.hpp"
-#include "theory/global/rotation_branch.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -95,36 +93,18 @@ void frame(benchmark::State& state, Energy energy) {
 }
 
 /// 8 frames per iteration through the batch call vertices_at(times), in parallel on the machine's cores; its
-/// frames_per_s is the amortised rate.
+/// frames/s is the amortised rate.
 void frames_batched(benchmark::State& state, Energy energy) {
   const Workload& w = workload();
-  const global::Interpolation interpolation(w.source, w.target, options_for(energy));
-  constexpr int batch = 8;
-  int k = 0;
-  for (auto _ : state) {
-    std::vector<double> times;
-    for (int j = 0; j < batch; ++j) times.push_back((k++ % 60 + 0.5) / 60);
-    benchmark::DoNotOptimize(interpolation.vertices_at(times).data());
-  }
-  state.counters["frames/s"] = benchmark::Counter(batch, benchmark::Counter::kIsIterationInvariantRate);
+  bench::time_batches(state, global::Interpolation(w.source, w.target, options_for(energy)), "frames/s");
 }
 
 /// The baseline: the real 2n × 2n form G(t) = realified H(t), analysed and factorised from scratch for every
 /// frame. Building G is not timed, so the baseline's assembly is free: the ratio to it understates ours.
 void frame_refactor(benchmark::State& state, Energy energy) {
   const Workload& w = workload();
-  const global::InterpolationOptions options = options_for(energy);
-  std::vector<Eigen::Matrix2d> A;
-  Eigen::VectorXd theta(w.source.triangle_count());
-  for (Eigen::Index i = 0; i < w.source.triangle_count(); ++i) {
-    global::Corners<double> p, q;
-    for (int c = 0; c < 3; ++c) p.col(c) = w.source.corner(i, c), q.col(c) = w.target.corner(i, c);
-    A.push_back(global::linear_part(p, q));
-    theta[i] = global::principal_polar_angle(A.back());
-  }
-  const global::LocalPaths paths(A, options.homotopy, global::consistent_angles(w.source.triangles, theta));
-  const global::FrameAssembly assembly(w.source, w.target, options, paths, nullptr,
-                                       global::constraint_terms(options.constraints, w.source, w.target, paths));
+  const bench::AssembledPair pair(w.source, w.target, options_for(energy));
+  const global::FrameAssembly& assembly = pair.assembly();
   global::FrameAssembly::SparseMatrix H = assembly.pattern();
   int k = 0;
   for (auto _ : state) {
