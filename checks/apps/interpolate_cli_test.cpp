@@ -11,6 +11,7 @@
 
 #include <fstream>
 #include <numbers>
+#include <tuple>
 #include <vector>
 
 namespace {
@@ -305,6 +306,31 @@ TEST(InterpolateCli, TimesWritesExactlyThoseFramesWithTheirEnergies) {
       for (const std::string& name : series)
         EXPECT_NE(read_text(html).find("{\"name\":\"" + name), std::string::npos) << html << ": " << name;
   }
+}
+
+TEST(InterpolateCli, MetricsListsOnlyWhatIsAskedFor) {
+  const fs::path folder = scratch("metrics");
+  ASSERT_EQ(run_cli("shapes worm-curl --out " + folder.string()).status, 0);
+  const std::string io =
+      " --source " + (folder / "source.obj").string() + " --target " + (folder / "target.obj").string();
+  for (const auto& [choice, energy, quality] :
+       {std::tuple{"energy", true, false}, {"quality", false, true}, {"none", false, false}, {"all", true, true}}) {
+    const fs::path out = folder / choice;
+    const auto result =
+        run_cli("interpolate" + io + " --frames 3 --no-figures --metrics " + choice + " --out " + out.string());
+    ASSERT_EQ(result.status, 0) << result.error;
+    const nlohmann::json metrics = read_json(out / "metrics.json");
+    EXPECT_EQ(metrics["options"]["metrics"], choice);
+    for (const auto& frame : metrics["frames"]) {
+      EXPECT_EQ(frame.contains("energy"), energy) << choice;
+      EXPECT_EQ(frame.contains("min_det"), quality) << choice;
+    }
+  }
+  // `view` computes the quality that such a run left out
+  ASSERT_EQ(run_cli("view " + (folder / "none").string() + " -o " + (folder / "view.html").string()).status, 0);
+  const auto bad = run_cli("interpolate" + io + " --metrics some --out " + (folder / "bad").string());
+  EXPECT_NE(bad.status, 0);
+  EXPECT_TRUE(one_line(bad.error)) << bad.error;
 }
 
 /// The largest distance between the vertices of frame k of `a` and frame k of `b`, over the bounding box

@@ -93,9 +93,10 @@ struct Interpolation::Engine {
   };
   /// The frames' workspaces: [0] that of vertices_at(t), [0, W) those of the batch call's W workers, kept
   /// for the next batch. They are the only state a frame changes, hence mutable; each is guarded by its
-  /// mutex, the list by its own.
+  /// mutex, the list (which a batch may lengthen) by its own, and the first stays where it is.
   mutable std::vector<std::unique_ptr<Workspace>> workspaces;
   mutable std::mutex workspaces_mutex;
+  Workspace* first_workspace = nullptr;
 
   /// v(t) at a t in range, when H is fixed: L [x y] = [Re b, Im b], both columns in one solve; the
   /// right-hand side on `threads` threads.
@@ -114,13 +115,16 @@ struct Interpolation::Engine {
     v << z.real().transpose(), z.imag().transpose();  // z_k = v_kx + i v_ky
     return v;
   }
-  /// At least `count` workspaces, the new ones copies of the first.
-  void reserve_workspaces(std::size_t count) const {
+  /// The first `count` workspaces, the missing ones made as copies of the first.
+  std::vector<Workspace*> reserve_workspaces(std::size_t count) const {
     const std::lock_guard lock(workspaces_mutex);
     while (workspaces.size() < count) {
-      const std::lock_guard first(workspaces.front()->mutex);
-      workspaces.push_back(std::make_unique<Workspace>(*workspaces.front()));
+      const std::lock_guard first(first_workspace->mutex);
+      workspaces.push_back(std::make_unique<Workspace>(*first_workspace));
     }
+    std::vector<Workspace*> reserved;
+    for (std::size_t w = 0; w < count; ++w) reserved.push_back(workspaces[w].get());
+    return reserved;
   }
   template <class Scalar>
   void analyse(SparseMinimiser<Scalar>& minimiser, const Eigen::SparseMatrix<Scalar>& K) const {
@@ -154,6 +158,7 @@ struct Interpolation::Engine {
       analyse(minimiser, H);
       minimiser.factorise(H);
       workspaces.push_back(std::make_unique<Workspace>(std::move(H), std::move(minimiser)));
+      first_workspace = workspaces.front().get();
     }
   }
 };
@@ -180,7 +185,7 @@ Eigen::Matrix2Xd Interpolation::vertices_at(double t) const {
   if (engine.assembly->isotropic())
     return engine.isotropic_frame(
         t, ranges_for(static_cast<std::size_t>(engine.assembly->pattern().rows()), triangles_per_thread / 2));
-  Engine::Workspace& work = *engine.workspaces.front();
+  Engine::Workspace& work = *engine.first_workspace;
   const std::lock_guard lock(work.mutex);
   return engine.frame_in(work, t);
 }
@@ -191,10 +196,15 @@ std::vector<Eigen::Matrix2Xd> Interpolation::vertices_at(const std::vector<doubl
   std::vector<Eigen::Matrix2Xd> frames(times.size());
   const bool isotropic = engine.assembly->isotropic();
   std::size_t workers = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), times.size());
+  std::vector<Engine::Workspace*> workspaces;
   if (!isotropic) {  // a workspace per worker, their factors within workspace_bytes
-    const double bytes = std::max(1.0, engine.workspaces.front()->minimiser.factor().factor_bytes());
+    double bytes = 1;
+    {
+      const std::lock_guard lock(engine.first_workspace->mutex);
+      bytes = std::max(bytes, engine.first_workspace->minimiser.factor().factor_bytes());
+    }
     workers = std::min(workers, static_cast<std::size_t>(std::max(1.0, std::floor(workspace_bytes / bytes))));
-    engine.reserve_workspaces(workers);
+    workspaces = engine.reserve_workspaces(workers);
   }
   std::atomic<std::size_t> next{0};
   std::exception_ptr failure;
@@ -202,9 +212,9 @@ std::vector<Eigen::Matrix2Xd> Interpolation::vertices_at(const std::vector<doubl
   auto work = [&](std::size_t w) {  // worker w takes the next frame, in workspace w
     try {
       std::unique_lock<std::mutex> lock;
-      if (!isotropic) lock = std::unique_lock(engine.workspaces[w]->mutex);
+      if (!isotropic) lock = std::unique_lock(workspaces[w]->mutex);
       for (std::size_t k; (k = next++) < times.size();)
-        frames[k] = isotropic ? engine.isotropic_frame(times[k], 1) : engine.frame_in(*engine.workspaces[w], times[k]);
+        frames[k] = isotropic ? engine.isotropic_frame(times[k], 1) : engine.frame_in(*workspaces[w], times[k]);
     } catch (...) {
       const std::lock_guard lock(failure_mutex);
       if (!failure) failure = std::current_exception();

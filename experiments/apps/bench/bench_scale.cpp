@@ -1,28 +1,27 @@
-// How the global engine's cost grows with the mesh (issue 12, "Scale"): set-up (local maps, rotation
+// How the global engine's cost grows with the mesh (issues 12 and 19): set-up (local maps, rotation
 // branches, sparsity pattern, symbolic analysis, first factorisation), time per frame for E^F and E^R, and
-// peak memory, on the project's man (meshed by CGAL to 65,326 triangles) bent by a circular curl through one
-// radian along its width (bench_interp's stand-in for the octopus), and on that pair subdivided 1-to-4 once
-// and twice (261,304 and 1,045,216 triangles: shapes/subdivide.hpp). The
-// options are those of `affinterp interpolate`: area weights, the straight barycentre locus, and for E^R the
-// default gauge edge. Peak memory: getrusage's ru_maxrss, its high-water mark reset (Linux
-// /proc/self/clear_refs) before each benchmark builds its Interpolation, so each counter is that
-// benchmark's own peak of the whole process (the cached meshes included). Targets at 1M triangles on 2 cores:
-// set-up ≤ 5 s, E^F ≤ 0.1 s and E^R ≤ 0.6 s per frame, peak ≤ 2 GB (experiments/claims/engine_scale.hpp).
+// peak memory, on the project's man bent by a circular curl through one radian along its width
+// (bench_interp's stand-in for the octopus): meshed by CGAL with edges up to 0.0137 (65,326 triangles) and
+// 2, 4, 8 times that (16k, 4k, 1k triangles), and the 65k pair subdivided 1-to-4 once and twice (261,304 and
+// 1,045,216 triangles: shapes/subdivide.hpp). The options are those of `affinterp interpolate`: area
+// weights, the straight barycentre locus, and for E^R the default gauge edge. Peak memory: getrusage's
+// ru_maxrss, its high-water mark reset (Linux /proc/self/clear_refs) before each benchmark builds its
+// Interpolation, so each counter is that benchmark's own peak of the whole process (the cached meshes
+// included). Targets at 1M triangles on 2 cores: experiments/claims/engine_scale.hpp.
 // scale_* with the back-end the engine picks by size (theory/global/sparse_factor.hpp, what the report's
-// engine_scale reads); backend_* the same on each back-end by name (…/simplicial, …/cholmod when built in),
-// side by side; and batch_frames/E/size: vertices_at(times) of 8 frames at once, in parallel on the
-// machine's cores (frames_per_s, the amortised cost).
+// engine_scale reads) and batch_frames/E/size: vertices_at(times) of 8 frames at once, in parallel on the
+// machine's cores (frames_per_s, the amortised cost); backend_* on each back-end by name (…/simplicial,
+// …/cholmod when built in), side by side: set-up, one frame, and one numeric factorisation and one solve of
+// the frame's system (what the back-end switch is set from).
 // Run with --benchmark_filter to leave out the largest size (it takes minutes).
 #include "experiments/apps/bench/bench_context.hpp"
+#include "experiments/apps/bench/engine_bench.hpp"
 #include "experiments/inputs/shapes/curl.hpp"
 #include "experiments/inputs/shapes/man.hpp"
 #include "experiments/inputs/shapes/subdivide.hpp"
-#include "theory/global/constraint_terms.hpp"
 #include "theory/global/frame_assembly.hpp"
 #include "theory/global/gauge.hpp"
 #include "theory/global/interpolation.hpp"
-#include "theory/global/local_paths.hpp"
-#include "theory/global/rotation_branch.hpp"
 #include "theory/global/sparse_factor.hpp"
 
 #include <benchmark/benchmark.h>
@@ -122,15 +121,7 @@ void frames_batched(benchmark::State& state, Energy energy, int level, std::opti
   const shapes::MeshPairShapes& pair = workload(level);
   const global::InterpolationOptions options = options_for(energy, pair, back_end);
   const bool own = reset_peak_memory();
-  const global::Interpolation interpolation(pair.source, pair.target, options);
-  constexpr int batch = 8;
-  int k = 0;
-  for (auto _ : state) {
-    std::vector<double> times;
-    for (int j = 0; j < batch; ++j) times.push_back((k++ % 60 + 0.5) / 60);
-    benchmark::DoNotOptimize(interpolation.vertices_at(times).data());
-  }
-  state.counters["frames_per_s"] = benchmark::Counter(batch, benchmark::Counter::kIsIterationInvariantRate);
+  bench::time_batches(state, global::Interpolation(pair.source, pair.target, options), "frames_per_s");
   report(state, pair, own);
 }
 
@@ -141,17 +132,8 @@ Eigen::SparseMatrix<Scalar> frame_matrix(int level) {
   const shapes::MeshPairShapes& pair = workload(level);
   const Energy energy = std::is_same_v<Scalar, double> ? Energy::frobenius : Energy::similarity;
   const global::InterpolationOptions options = options_for(energy, pair, std::nullopt);
-  std::vector<Eigen::Matrix2d> A;
-  Eigen::VectorXd theta(pair.source.triangle_count());
-  for (Eigen::Index i = 0; i < pair.source.triangle_count(); ++i) {
-    global::Corners<double> p, q;
-    for (int c = 0; c < 3; ++c) p.col(c) = pair.source.corner(i, c), q.col(c) = pair.target.corner(i, c);
-    A.push_back(global::linear_part(p, q));
-    theta[i] = global::principal_polar_angle(A.back());
-  }
-  const global::LocalPaths paths(A, options.homotopy, global::consistent_angles(pair.source.triangles, theta));
-  const global::FrameAssembly assembly(pair.source, pair.target, options, paths, nullptr,
-                                       global::constraint_terms(options.constraints, pair.source, pair.target, paths));
+  const bench::AssembledPair assembled(pair.source, pair.target, options);
+  const global::FrameAssembly& assembly = assembled.assembly();
   global::FrameAssembly::SparseMatrix H = assembly.pattern();
   assembly.matrix_at(0.5, H);
   if constexpr (std::is_same_v<Scalar, double>) {

@@ -52,6 +52,7 @@ struct InterpolateOptions {
   std::string time_range = default_time_range();
   std::optional<std::string> times;  ///< --times T1,T2,...: exactly these frames (not with --frames, --time-range)
   std::string format = "obj";        ///< frame files: obj (one per frame) or npy (frames.npy, all of them)
+  std::string metrics = "all";       ///< per-frame metrics in metrics.json: all, energy, quality or none
 };
 
 /// Frames drawn in the filmstrip: at most 8, evenly spread, first and last included.
@@ -194,7 +195,10 @@ void run(const InterpolateOptions& o) {
   if (o.format == "npy")
     npy.emplace(staged.staging() / "frames.npy", static_cast<std::size_t>(frame_count), pair.source.vertex_count());
   // Frames in batches of one per hardware thread (vertices_at(times) solves them in parallel), the next
-  // batch solved while this thread writes the last one and computes its energy and metrics.
+  // batch solved while this thread writes the last one and computes the metrics asked for (all of them when
+  // the figures are drawn: the viewer shows them).
+  const bool energies = o.figures || o.metrics == "all" || o.metrics == "energy",
+             quality = o.figures || o.metrics == "all" || o.metrics == "quality";
   const std::size_t batch = std::max(1u, std::thread::hardware_concurrency());
   auto solve = [&](std::size_t first) {
     const std::size_t last = std::min(times.size(), first + batch);
@@ -213,23 +217,26 @@ void run(const InterpolateOptions& o) {
         npy->append(frame.vertices);
       else
         io::write_obj(frame, staged.staging() / frame_name(k));
-      const global::FrameEnergy energy = interpolation->energy_at(t, frame.vertices);
-      nlohmann::json entry = {{"index", k},
-                              {"t", t},
-                              {"file", npy ? "frames.npy" : frame_name(k)},
-                              {"energy", finite_or_null(energy.total)}};
-      energy_series[0].values.push_back(energy.total);
-      if (energy_has_parts(options)) {
-        entry["energy_parts"] = energy_parts_json(energy, options);
-        if (k == 0)
-          for (const auto& [name, value] : entry["energy_parts"].items()) energy_series.push_back({name, {}});
-        for (std::size_t s = 1; s < energy_series.size(); ++s)
-          energy_series[s].values.push_back(entry["energy_parts"][energy_series[s].name].get<double>());
+      nlohmann::json entry = {{"index", k}, {"t", t}, {"file", npy ? "frames.npy" : frame_name(k)}};
+      if (energies) {
+        const global::FrameEnergy energy = interpolation->energy_at(t, frame.vertices);
+        entry["energy"] = finite_or_null(energy.total);
+        energy_series[0].values.push_back(energy.total);
+        if (energy_has_parts(options)) {
+          entry["energy_parts"] = energy_parts_json(energy, options);
+          if (k == 0)
+            for (const auto& [name, value] : entry["energy_parts"].items()) energy_series.push_back({name, {}});
+          for (std::size_t s = 1; s < energy_series.size(); ++s)
+            energy_series[s].values.push_back(entry["energy_parts"][energy_series[s].name].get<double>());
+        }
       }
-      const global::FrameMetrics metrics = global::frame_metrics(pair.source, frame.vertices);
-      entry.update(metrics_json(metrics));
+      if (quality) {
+        const global::FrameMetrics metrics = global::frame_metrics(pair.source, frame.vertices);
+        entry.update(metrics_json(metrics));
+        if (o.figures) run.metrics.push_back(metrics);
+      }
       frames.push_back(entry);
-      if (o.figures) run.times.push_back(t), run.frames.push_back(frame.vertices), run.metrics.push_back(metrics);
+      if (o.figures) run.times.push_back(t), run.frames.push_back(frame.vertices);
       if (progress) progress->advance();
     }
   }
@@ -255,6 +262,7 @@ void run(const InterpolateOptions& o) {
                                {"barycentre_locus", o.engine.barycentre},
                                {"time_range", {options.t_begin, options.t_end}},
                                {"format", o.format},
+                               {"metrics", o.metrics},
                                {"times", o.times ? nlohmann::json(times) : nlohmann::json(nullptr)}}},
                              {"frames", frames}};
   if (default_edge)
@@ -288,10 +296,13 @@ void run(const InterpolateOptions& o) {
           entry.path().filename() == "frames.npy")
         fs::remove(entry.path(), ignored);
   staged.commit();
-  int worst = 0;
-  for (const auto& f : frames) worst = std::max(worst, f["flipped_triangles"].get<int>());
-  std::cerr << "wrote " << frame_count << " frames to " << o.out << " (most flipped triangles in a frame: " << worst
-            << ")\n";
+  std::cerr << "wrote " << frame_count << " frames to " << o.out;
+  if (quality) {
+    int worst = 0;
+    for (const auto& f : frames) worst = std::max(worst, f["flipped_triangles"].get<int>());
+    std::cerr << " (most flipped triangles in a frame: " << worst << ")";
+  }
+  std::cerr << "\n";
 }
 
 }  // namespace
@@ -362,6 +373,12 @@ void add_interpolate_command(CLI::App& app) {
       ->check(CLI::IsMember({"obj", "npy"}))
       ->capture_default_str();
   cmd->add_flag("!--no-figures", o->figures, "Write only frames and metrics.json (no filmstrip, GIF or viewer)");
+  cmd->add_option("--metrics", o->metrics,
+                  "What metrics.json gives per frame besides t: all, energy (E_t and its parts), quality (flips, "
+                  "area ratios, distortion) or none; with the figures drawn all are computed (the viewer shows "
+                  "them). Each costs about as much as the frame's solve on large meshes")
+      ->check(CLI::IsMember({"all", "energy", "quality", "none"}))
+      ->capture_default_str();
   cmd->callback([o] { run(*o); });
 }
 

@@ -6,6 +6,7 @@
 #include "experiments/inputs/mesh_pair.hpp"
 #include "experiments/support/interrupt_cleanup.hpp"
 #include "plots/viewer.hpp"
+#include "theory/global/metrics.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -74,10 +75,13 @@ plots::ViewerRun read_run(const fs::path& folder) {
                             1);
       run.times.push_back(frame.at("t").get<double>());
       run.frames.push_back(mesh.vertices);
-      run.metrics.push_back({frame.at("flipped_triangles").get<Eigen::Index>(), number_or_infinity(frame.at("min_det")),
-                             number_or_infinity(frame.at("max_det")), number_or_infinity(frame.at("max_distortion")),
-                             number_or_infinity(frame.at("mean_distortion")),
-                             number_or_infinity(frame.at("area_ratio"))});
+      if (frame.contains("flipped_triangles"))
+        run.metrics.push_back({frame["flipped_triangles"].get<Eigen::Index>(), number_or_infinity(frame.at("min_det")),
+                               number_or_infinity(frame.at("max_det")), number_or_infinity(frame.at("max_distortion")),
+                               number_or_infinity(frame.at("mean_distortion")),
+                               number_or_infinity(frame.at("area_ratio"))});
+      else  // a run with --metrics energy or none
+        run.metrics.push_back(global::frame_metrics(pair.source, mesh.vertices));
       if (!frame.contains("energy")) continue;
       energy[0].values.push_back(number_or_infinity(frame["energy"]));
       for (std::size_t s = 1; s < energy.size(); ++s)

@@ -1,0 +1,31 @@
+#pragma once
+// What the global engine's benchmarks (bench_interp, bench_scale) share: a pair's frame form assembled as the
+// engine assembles it, for timing the sparse system itself, and batches of consecutive frames through the
+// batch call.
+#include "theory/global/frame_assembly.hpp"
+#include "theory/global/interpolation.hpp"
+#include "theory/global/local_paths.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <optional>
+#include <string>
+
+namespace affinterp::bench {
+
+/// The local paths of (source, target) on consistent rotation branches and the frame assembly over them.
+class AssembledPair {
+ public:
+  AssembledPair(const global::Mesh& source, const global::Mesh& target, const global::InterpolationOptions& options);
+  const global::FrameAssembly& assembly() const { return *assembly_; }
+
+ private:
+  global::LocalPaths paths_;
+  std::optional<global::FrameAssembly> assembly_;
+};
+
+/// The benchmark loop over batches of 8 consecutive frames, t = (k mod 60 + ½)/60, one vertices_at(times) call
+/// each, with the counter `rate` in frames per second (the amortised rate).
+void time_batches(benchmark::State& state, const global::Interpolation& interpolation, const std::string& rate);
+
+}  // namespace affinterp::bench
