@@ -58,6 +58,15 @@ TEST(ShapesCli, ListsAndWritesEveryPair) {
   const auto unknown = run_cli("shapes teapot --out " + scratch("teapot").string());
   EXPECT_EQ(unknown.status, 2);
   EXPECT_TRUE(one_line(unknown.error)) << unknown.error;
+  const fs::path strip = scratch("shapes") / "strip-40x5";
+  ASSERT_EQ(run_cli("shapes strip-spiral --quads 40x5 --out " + strip.string()).status, 0);
+  EXPECT_EQ(io::read_mesh(strip / "source.obj").triangle_count(), 2 * 40 * 5);
+  for (const std::string bad : {"strip-spiral --quads 0x5", "strip-spiral --quads 40", "strip-spiral --quads 40x5x2",
+                                "strip-spiral --quads 100000x1000", "man-wave --quads 40x5"}) {
+    const auto refused = run_cli("shapes " + bad + " --out " + scratch("refused").string());
+    EXPECT_EQ(refused.status, 2) << bad;
+    EXPECT_TRUE(one_line(refused.error)) << bad << ": " << refused.error;
+  }
 }
 
 TEST(InterpolateCli, RunsOnEveryGeneratedShape) {

@@ -49,6 +49,30 @@ fs::path write_bench(const nlohmann::json& benchmarks) {
   return file;
 }
 
+TEST(EngineSpeed, JudgesIssue19sRaisedTargetsOneFrameAtATimeAndBatched) {
+  // E^F: 200 frames/s alone, a batch of 8 in 20 ms (400 frames/s); E^R: 50 alone, 8 in 160 ms (50).
+  const fs::path file = write_bench(concatenated(
+      {repeated("setup/F/mesh", 120, 1000), repeated("frame/F/mesh", 5.0), repeated("batch_frames/F/mesh", 20.0),
+       repeated("setup/R/mesh", 150, 1000), repeated("frame/R/mesh", 20.0), repeated("batch_frames/R/mesh", 160.0)}));
+  const nlohmann::json table = engine_speed(file);
+  fs::remove(file);
+  ASSERT_EQ(table["rows"].size(), 2u);
+  const auto& F = table["rows"][0];
+  EXPECT_EQ(F["raised_target_frames_per_s"], 300.0);
+  EXPECT_DOUBLE_EQ(F["batched_frames_per_s"].get<double>(), 400.0);
+  EXPECT_EQ(F["raised_verdict"], "not-reproduced");
+  EXPECT_EQ(F["raised_verdict_batched"], "reproduced");
+  const auto& R = table["rows"][1];
+  EXPECT_EQ(R["raised_target_frames_per_s"], 60.0);
+  EXPECT_EQ(R["raised_verdict"], "not-reproduced");
+  EXPECT_EQ(R["raised_verdict_batched"], "not-reproduced");
+
+  const std::string md = report::render_markdown(
+      {{"claims", nlohmann::json::array()}, {"environment", nlohmann::json::object()}, {"engine_speed", table}});
+  EXPECT_NE(md.find("| F | 300 | 200.0 ("), std::string::npos) << md;
+  EXPECT_NE(md.find(") | **no** | 400.0 ("), std::string::npos) << md;
+}
+
 TEST(EngineSpeed, JudgesEachEnergyAgainstItsTargets) {
   const fs::path file = write_bench(concatenated({repeated("setup/F/mesh", 120, 1000), repeated("frame/F/mesh", 5.0),
                                                   repeated("frame_refactor/F/mesh", 100),

@@ -13,9 +13,10 @@ namespace affinterp::claims {
 /// figures, seconds.
 nlohmann::json to_json(const ClaimResult& result);
 
-/// The global engine's tables as the run measured them (engine_speed.hpp, engine_scale.hpp; null: not measured).
+/// The global engine's tables as the run measured them (engine_speed.hpp, engine_scale.hpp, engine_cli.hpp; null:
+/// not measured).
 struct EngineTables {
-  nlohmann::json speed, scale;
+  nlohmann::json speed, scale, cli;
 };
 
 /// The whole document, one entry per claim of `registry` in run order, and the engine's tables. When `previous`

@@ -21,8 +21,9 @@ namespace affinterp::claims {
 /// size over the size before), "back_ends": [{"name", "rows": [{"triangles", "setup_*", "frame_*", "factor_*",
 /// "solve_*" for F and R, in ms and cpu ms}], "exponents"}], "targets": {"triangles", "setup_ms", "frame_F_ms",
 /// "batch_R_ms", "peak_MB", "growth_R"}, "met" (null when no size reaches the targets' 1M triangles, else whether
-/// the largest such size meets all, on wall-clock times), "figures" (the drawn cost curve, when `settings` draws
-/// figures)}; null when `bench_file` does not exist.
+/// the largest such size meets all, on wall-clock times), "target_verdicts": [{"target", "limit", "measured", "met",
+/// "cause" (when missed: where the time goes, from the run's own back-end rows)}] at that size, "figures" (the drawn
+/// cost curve, when `settings` draws figures)}; null when `bench_file` does not exist.
 nlohmann::json engine_scale(const std::filesystem::path& bench_file, const RunSettings& settings);
 
 }  // namespace affinterp::claims

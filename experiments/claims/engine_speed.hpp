@@ -14,7 +14,10 @@ namespace affinterp::claims {
 
 /// {"file", "machine", "compiler", "flags", "mesh", "triangles", "rows": [{"energy", "setup_ms", "setup_ms_ci95",
 /// "setup_target_ms", "frame_ms", "frames_per_s", "frames_per_s_ci95", "target_frames_per_s" (null: none),
-/// "repetitions", "baseline_ms" (null: not measured), "speedup_vs_baseline", "verdict"}]}; null when
+/// "repetitions", "baseline_ms" (null: not measured), "speedup_vs_baseline", "verdict", "batched_frames_per_s" and
+/// its "…_ci95" (8 frames a call to vertices_at(times) on the machine's cores; null: not measured), issue 19's
+/// "raised_target_frames_per_s" (E^F 300, E^R 60) and its "raised_verdict" one frame at a time and
+/// "raised_verdict_batched"}]}; null when
 /// `bench_file` does not exist. The medians' 95% bootstrap intervals (measured.hpp; null with fewer than 10
 /// repetitions) decide each row as the speed claims are decided: "reproduced" (targets met) when every
 /// interval lies within its target, "not-reproduced" when one lies outside, else "inconclusive".

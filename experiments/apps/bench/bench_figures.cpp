@@ -12,26 +12,19 @@
 // `gif animate` terminal (no ImageMagick) took 1.9 s for the filmstrip and 2.8 s for the GIF, about 3.2×;
 // the earlier pngcairo frames joined by ImageMagick's convert 3.8× (convert alone 3.5 s).
 #include "experiments/apps/bench/bench_context.hpp"
+#include "experiments/apps/bench/cli_process.hpp"
 #include "experiments/inputs/mesh_file.hpp"
 #include "experiments/inputs/shapes/curl.hpp"
 #include "experiments/inputs/shapes/man.hpp"
 
 #include <benchmark/benchmark.h>
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <chrono>
 #include <filesystem>
 #include <numbers>
-#include <stdexcept>
 #include <string>
 #include <vector>
-
-extern char** environ;
 
 namespace affinterp {
 namespace {
@@ -72,42 +65,21 @@ const Workload& workload() {
   return w;
 }
 
-struct Run {
-  double seconds, peak_mb;
-};
-
 /// `affinterp interpolate` on the workload, 17 frames, into a fresh folder; wall time and peak memory.
-Run interpolate(bool figures) {
+bench::ProcessRun interpolate(bool figures) {
   const Workload& w = workload();
   const fs::path out = w.folder / (figures ? "default" : "no-figures");
   fs::remove_all(out);
-  std::vector<std::string> args{AFFINTERP_CLI,     "interpolate", "--source", w.source.string(), "--target",
-                                w.target.string(), "--frames",    "17",       "--out",           out.string()};
+  std::vector<std::string> args{"interpolate", "--source", w.source.string(), "--target",  w.target.string(),
+                                "--frames",    "17",       "--out",           out.string()};
   if (!figures) args.push_back("--no-figures");
-  std::vector<char*> argv;
-  for (auto& arg : args) argv.push_back(arg.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t quiet;
-  posix_spawn_file_actions_init(&quiet);
-  posix_spawn_file_actions_addopen(&quiet, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&quiet, 2, "/dev/null", O_WRONLY, 0);
-  const auto start = std::chrono::steady_clock::now();
-  pid_t pid = 0;
-  if (posix_spawn(&pid, AFFINTERP_CLI, &quiet, nullptr, argv.data(), environ) != 0)
-    throw std::runtime_error("cannot start " AFFINTERP_CLI);
-  posix_spawn_file_actions_destroy(&quiet);
-  int status = 0;
-  rusage usage{};
-  wait4(pid, &status, 0, &usage);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) throw std::runtime_error("affinterp interpolate failed");
-  return {seconds, static_cast<double>(usage.ru_maxrss) / 1024};
+  return bench::run_cli(AFFINTERP_CLI, args);
 }
 
 void default_against_no_figures(benchmark::State& state) {
   double with = 0, without = 0, peak_with = 0, peak_without = 0;
   for (auto _ : state) {
-    const Run plain = interpolate(false), full = interpolate(true);
+    const bench::ProcessRun plain = interpolate(false), full = interpolate(true);
     state.SetIterationTime(full.seconds);
     with += full.seconds, without += plain.seconds;
     peak_with = std::max(peak_with, full.peak_mb), peak_without = std::max(peak_without, plain.peak_mb);

@@ -20,7 +20,6 @@
 #include "experiments/inputs/shapes/man.hpp"
 #include "experiments/inputs/shapes/subdivide.hpp"
 #include "theory/global/frame_assembly.hpp"
-#include "theory/global/gauge.hpp"
 #include "theory/global/interpolation.hpp"
 #include "theory/global/sparse_factor.hpp"
 
@@ -61,18 +60,6 @@ const shapes::MeshPairShapes& workload(int level) {
   return pairs[level] = std::move(pair);
 }
 
-global::InterpolationOptions options_for(Energy energy, const shapes::MeshPairShapes& pair,
-                                         std::optional<global::SparseBackEnd> back_end) {
-  global::InterpolationOptions options;
-  options.energy = energy;
-  options.back_end = back_end;
-  options.area_weighted = true;
-  options.constraints.barycentre = global::BarycentreLocus{};
-  if (const auto edge = global::default_edge_direction(pair.source, pair.target, options))
-    options.constraints.edges.push_back(*edge);
-  return options;
-}
-
 /// Starts a new high-water mark of the resident set (Linux ≥ 4.0); false where that is not possible.
 bool reset_peak_memory() {
   std::ofstream clear_refs("/proc/self/clear_refs");
@@ -94,7 +81,7 @@ void report(benchmark::State& state, const shapes::MeshPairShapes& pair, bool pe
 
 void set_up(benchmark::State& state, Energy energy, int level, std::optional<global::SparseBackEnd> back_end) {
   const shapes::MeshPairShapes& pair = workload(level);
-  const global::InterpolationOptions options = options_for(energy, pair, back_end);
+  const global::InterpolationOptions options = bench::cli_options(energy, pair.source, pair.target, back_end);
   const bool own = reset_peak_memory();
   for (auto _ : state) {
     global::Interpolation interpolation(pair.source, pair.target, options);
@@ -105,7 +92,7 @@ void set_up(benchmark::State& state, Energy energy, int level, std::optional<glo
 
 void frame(benchmark::State& state, Energy energy, int level, std::optional<global::SparseBackEnd> back_end) {
   const shapes::MeshPairShapes& pair = workload(level);
-  const global::InterpolationOptions options = options_for(energy, pair, back_end);
+  const global::InterpolationOptions options = bench::cli_options(energy, pair.source, pair.target, back_end);
   const bool own = reset_peak_memory();
   const global::Interpolation interpolation(pair.source, pair.target, options);
   int k = 0;
@@ -119,7 +106,7 @@ void frame(benchmark::State& state, Energy energy, int level, std::optional<glob
 /// 8 frames per iteration through vertices_at(times); time per frame = iteration time / 8.
 void frames_batched(benchmark::State& state, Energy energy, int level, std::optional<global::SparseBackEnd> back_end) {
   const shapes::MeshPairShapes& pair = workload(level);
-  const global::InterpolationOptions options = options_for(energy, pair, back_end);
+  const global::InterpolationOptions options = bench::cli_options(energy, pair.source, pair.target, back_end);
   const bool own = reset_peak_memory();
   bench::time_batches(state, global::Interpolation(pair.source, pair.target, options), "frames_per_s");
   report(state, pair, own);
@@ -131,7 +118,7 @@ template <class Scalar>
 Eigen::SparseMatrix<Scalar> frame_matrix(int level) {
   const shapes::MeshPairShapes& pair = workload(level);
   const Energy energy = std::is_same_v<Scalar, double> ? Energy::frobenius : Energy::similarity;
-  const global::InterpolationOptions options = options_for(energy, pair, std::nullopt);
+  const global::InterpolationOptions options = bench::cli_options(energy, pair.source, pair.target);
   const bench::AssembledPair assembled(pair.source, pair.target, options);
   const global::FrameAssembly& assembly = assembled.assembly();
   global::FrameAssembly::SparseMatrix H = assembly.pattern();

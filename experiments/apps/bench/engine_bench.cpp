@@ -1,6 +1,7 @@
 #include "experiments/apps/bench/engine_bench.hpp"
 
 #include "theory/global/constraint_terms.hpp"
+#include "theory/global/gauge.hpp"
 #include "theory/global/rotation_branch.hpp"
 
 #include <vector>
@@ -22,6 +23,18 @@ global::LocalPaths consistent_paths(const global::Mesh& source, const global::Me
 }
 
 }  // namespace
+
+global::InterpolationOptions cli_options(global::Energy energy, const global::Mesh& source, const global::Mesh& target,
+                                         std::optional<global::SparseBackEnd> back_end) {
+  global::InterpolationOptions options;
+  options.energy = energy;
+  options.back_end = back_end;
+  options.area_weighted = true;
+  options.constraints.barycentre = global::BarycentreLocus{};
+  if (const auto edge = global::default_edge_direction(source, target, options))
+    options.constraints.edges.push_back(*edge);
+  return options;
+}
 
 AssembledPair::AssembledPair(const global::Mesh& source, const global::Mesh& target,
                              const global::InterpolationOptions& options)

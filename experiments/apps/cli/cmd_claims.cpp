@@ -2,6 +2,7 @@
 #include "experiments/apps/cli/command.hpp"
 #include "experiments/bench/history.hpp"
 #include "experiments/claims/claims_json.hpp"
+#include "experiments/claims/engine_cli.hpp"
 #include "experiments/claims/engine_scale.hpp"
 #include "experiments/claims/engine_speed.hpp"
 #include "experiments/claims/registry.hpp"
@@ -57,7 +58,8 @@ void write_file(const fs::path& file, const std::string& text) {
 EngineTables engine_tables(const RunContext& context) {
   try {
     EngineTables tables{engine_speed(context.bench_dir / "bench_interp.json"),
-                        engine_scale(context.bench_dir / "bench_scale.json", context)};
+                        engine_scale(context.bench_dir / "bench_scale.json", context),
+                        engine_cli(context.bench_dir / "bench_cli_scale.json")};
     if (!tables.speed.is_null()) tables.speed["history"] = engine_speed_by_run(bench::runs_of(context.bench_dir));
     return tables;
   } catch (const std::runtime_error& e) {

@@ -4,6 +4,7 @@
 // available to users).
 #include "experiments/inputs/shapes/curl.hpp"
 #include "experiments/inputs/shapes/random_pair.hpp"
+#include "experiments/inputs/shapes/rolled_strip.hpp"
 
 #include <cstdint>
 #include <string>
@@ -19,8 +20,9 @@ struct ShapeInfo {
 /// Every shape pair's name and a one-line description.
 const std::vector<ShapeInfo>& shape_catalogue();
 
-/// The named pair (`seed` matters only for "random"); throws std::invalid_argument for an unknown name.
-MeshPairShapes make_shape(const std::string& name, std::uint64_t seed = 1);
+/// The named pair (`seed` matters only for "random", `quads` only for "strip-spiral"); throws
+/// std::invalid_argument for an unknown name.
+MeshPairShapes make_shape(const std::string& name, std::uint64_t seed = 1, StripQuads quads = {});
 
 /// The worm: a bar 8 × 0.5 and its curl whose end turns by 3π (θ(s) = 3π (s/L)²).
 const Curl& worm_curl();

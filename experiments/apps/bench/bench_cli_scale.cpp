@@ -1,0 +1,113 @@
+// The CLI as fast as the engine at a million triangles (issue 19): `affinterp interpolate` on the shape pair
+// strip-spiral at 2000 × 250 quads (1,000,000 triangles, 18.8 × 2 rolled 1.5 turns), with --format npy
+// --no-figures --metrics none, run as a process for 2 and for 10 frames, one after the other in each
+// iteration; a frame through the CLI, writing included, costs the difference over the 8 extra frames (reading
+// the meshes and the set-up cancel). Beside it, in the same process, the engine's own frame on the same pair:
+// vertices_at(times) of 8 frames, per frame (the CLI solves its frames in batches too). The report
+// (experiments/claims/engine_cli.hpp) sets the one against the other: the target is at most 1.3 times.
+#include "experiments/apps/bench/bench_context.hpp"
+#include "experiments/apps/bench/cli_process.hpp"
+#include "experiments/apps/bench/engine_bench.hpp"
+#include "experiments/inputs/mesh_file.hpp"
+#include "experiments/inputs/shapes/rolled_strip.hpp"
+#include "theory/global/interpolation.hpp"
+
+#include <benchmark/benchmark.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace affinterp {
+namespace {
+
+namespace fs = std::filesystem;
+using global::Energy;
+
+constexpr int cols = 2000, rows = 250;
+/// Frames of the short and the long CLI run, and of the engine's batch.
+constexpr int short_run = 2, long_run = 10, batch = 8;
+
+struct Workload {
+  shapes::Spiral pair;
+  fs::path folder, source, target;
+};
+
+/// The spiral, and its OBJ files written once (as `affinterp shapes strip-spiral --quads 2000x250` writes them).
+const Workload& workload() {
+  static const Workload w = [] {
+    Workload load{shapes::spiral(cols, rows),
+                  fs::temp_directory_path() / ("affinterp_bench_cli_scale_" + std::to_string(getpid())),
+                  {},
+                  {}};
+    fs::create_directories(load.folder);
+    load.source = load.folder / "source.obj", load.target = load.folder / "target.obj";
+    io::write_obj(load.pair.source, load.source);
+    io::write_obj(load.pair.target, load.target);
+    return load;
+  }();
+  return w;
+}
+
+/// `affinterp interpolate` with `energy` for `frames` frames into a fresh folder: its wall time.
+double interpolate_seconds(Energy energy, int frames) {
+  const Workload& w = workload();
+  const fs::path out = w.folder / ("out-" + std::to_string(frames));
+  fs::remove_all(out);
+  return bench::run_cli(AFFINTERP_CLI, {"interpolate", "--source", w.source.string(), "--target", w.target.string(),
+                                        "--energy", global::to_string(energy), "--frames", std::to_string(frames),
+                                        "--format", "npy", "--no-figures", "--metrics", "none", "--out", out.string()})
+      .seconds;
+}
+
+void cli_frame(benchmark::State& state, Energy energy) {
+  for (auto _ : state) {
+    const double short_seconds = interpolate_seconds(energy, short_run);
+    const double long_seconds = interpolate_seconds(energy, long_run);
+    state.SetIterationTime((long_seconds - short_seconds) / (long_run - short_run));
+  }
+  state.counters["triangles"] = static_cast<double>(workload().pair.source.triangle_count());
+}
+
+void engine_frame(benchmark::State& state, Energy energy) {
+  const shapes::Spiral& s = workload().pair;
+  const global::Interpolation interpolation(s.source, s.target, bench::cli_options(energy, s.source, s.target));
+  int k = 0;
+  for (auto _ : state) {
+    std::vector<double> times;
+    for (int j = 0; j < batch; ++j) times.push_back((k++ % 60 + 0.5) / 60);
+    const auto start = std::chrono::steady_clock::now();
+    benchmark::DoNotOptimize(interpolation.vertices_at(times).data());
+    state.SetIterationTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / batch);
+  }
+  state.counters["triangles"] = static_cast<double>(s.source.triangle_count());
+}
+
+void register_all() {
+  const std::string size = std::to_string(2 * cols * rows);
+  for (const Energy energy : {Energy::frobenius, Energy::similarity}) {
+    const std::string name = global::to_string(energy) + "/" + size;
+    using Function = void (*)(benchmark::State&, Energy);
+    for (const auto& [kind, function] : {std::pair<std::string, Function>{"cli_frame/", cli_frame},
+                                         std::pair<std::string, Function>{"engine_frame/", engine_frame}})
+      benchmark::RegisterBenchmark((kind + name).c_str(), function, energy)
+          ->Unit(benchmark::kMillisecond)
+          ->UseManualTime()
+          ->Iterations(1)
+          ->Repetitions(3)
+          ->ReportAggregatesOnly(true);
+  }
+}
+
+}  // namespace
+}  // namespace affinterp
+
+int main(int argc, char** argv) {
+  affinterp::register_all();
+  const int status = affinterp::bench::run_benchmarks(argc, argv);
+  std::filesystem::remove_all(affinterp::workload().folder);
+  return status;
+}

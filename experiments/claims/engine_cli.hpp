@@ -1,0 +1,15 @@
+#pragma once
+// The CLI against the engine at a million triangles, for the report, from one run of build/bin/bench_cli_scale
+// (issue 19): per energy, a frame through `affinterp interpolate` (writing its .npy included) and the engine's
+// own frame on the same pair (issue 19's spiral, 2000 × 250 quads), against the target of at most 1.3 times.
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+
+namespace affinterp::claims {
+
+/// {"file", "machine", "triangles", "target_ratio", "rows": [{"energy", "cli_frame_ms", "engine_frame_ms", "ratio",
+/// "met"}] (medians of the run's repetitions), "met" (every row's)}; null when `bench_file` does not exist.
+nlohmann::json engine_cli(const std::filesystem::path& bench_file);
+
+}  // namespace affinterp::claims
