@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <system_error>
 
 namespace affinterp::checks {
 
@@ -29,10 +30,18 @@ inline CliResult run_cli(const std::string& args) {
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), text.str()};
 }
 
-/// A fresh, empty folder `name` in this test program's own temporary folder, `program`_PID.
+/// A fresh, empty folder `name` in this test program's own temporary folder, `program`_PID, which is removed
+/// when the program exits normally (every call of one program passes the same `program`).
 inline std::filesystem::path scratch_folder(const std::string& program, const std::string& name) {
-  const std::filesystem::path folder =
-      std::filesystem::temp_directory_path() / (program + "_" + std::to_string(getpid())) / name;
+  struct RemovedAtExit {
+    std::filesystem::path root;
+    ~RemovedAtExit() {
+      std::error_code ignored;
+      std::filesystem::remove_all(root, ignored);
+    }
+  };
+  static const RemovedAtExit own{std::filesystem::temp_directory_path() / (program + "_" + std::to_string(getpid()))};
+  const std::filesystem::path folder = own.root / name;
   std::filesystem::remove_all(folder);
   std::filesystem::create_directories(folder);
   return folder;
