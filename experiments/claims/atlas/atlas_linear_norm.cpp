@@ -3,6 +3,8 @@
 #include "experiments/proofs/citations.hpp"
 #include "experiments/proofs/condition_sentences.hpp"
 #include "experiments/proofs/goodness_formulas.hpp"
+#include "experiments/proofs/lemma_sentences.hpp"
+#include "experiments/proofs/literal_formulations.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
@@ -38,6 +40,19 @@ AtlasProof proof() {
     condition = logic::substitute(condition, name, by);
   const logic::Formula domain = logic::greater(p * r + k * k, 0);  // det A > 0
   const logic::Formula property = proofs::norm_property(normal_form, "N");
+  // Issue 17: without Dines' theorem, over the directions (1, m), (0, 1) in the normal form; the normal form's
+  // rotation decided as a sentence. In a, b, c, d (an attempt) neither decider answers.
+  std::vector<proofs::FormulationPlan> formulations =
+      proofs::norm_directions({"conj.", {"p", "r", "k"}, domain, condition, normal_form});
+  for (proofs::FormulationPlan& f : formulations) {
+    f.method =
+        "in the normal form [[p, -k], [k, r]] of Lemma L7 (identities; the rotation that brings A to it "
+        "exists: sentence lemma.L7.normal-form): " +
+        f.method;
+    f.sentences.insert(f.sentences.begin(), proofs::lemma_L7_normal_form());
+  }
+  const proofs::PolyMat2 general{
+      {{Polynomial::variable("a"), Polynomial::variable("b")}, {Polynomial::variable("c"), Polynomial::variable("d")}}};
   return AtlasProof{
       .scope = cell.domain_words,
       .method =
@@ -51,6 +66,11 @@ AtlasProof proof() {
       .z3_only = {},
       .identities = {},
       .cites = std::string(proofs::citations::dines),
+      .formulations = formulations,
+      .attempts = {{.formulation = "Def 2.2.2 at level E over the directions (1, m), (0, 1) in a, b, c, d (no normal "
+                                   "form): QEPCAD's McCallum projection and Z3",
+                    .sentences = proofs::norm_directions_sentences(
+                        {"", cell.variables, cell.domain, cell.condition_formula(), general}, "E")}},
   };
 }
 
