@@ -37,7 +37,7 @@ struct FormulationPlan {
 struct AttemptPlan {
   std::string formulation;  ///< in words: the level, the variables, the QEPCAD options
   std::vector<Sentence> sentences;
-  DeciderLimits limits{.seconds = 600, .address_space_bytes = std::size_t{4} << 30, .attempt = true};
+  DeciderLimits limits{.seconds = 300, .address_space_bytes = std::size_t{4} << 30, .attempt = true};
   std::string not_expressible{};
 };
 

@@ -16,6 +16,12 @@ std::vector<Sentence> against(const ConditionOnDomain& c, const std::string& pre
   return sentences;
 }
 
+/// The condition against norm_property_directions(c.B, level): "<prefix>directions.cond-not-prop.<level>" and
+/// "…prop-not-cond.<level>".
+std::vector<Sentence> norm_directions_sentences(const ConditionOnDomain& c, const std::string& level) {
+  return against(c, c.prefix + "directions.", level, norm_property_directions(c.B, level));
+}
+
 /// The lemmas every directions formulation uses: the norm against its square, the directions.
 std::vector<Sentence> direction_lemmas() { return {lemma_L4(), lemma_L6_directions(), lemma_L1()}; }
 
@@ -52,10 +58,6 @@ AttemptPlan norm_directions_literal(const ConditionOnDomain& c) {
       "Def 2.2.2 at level L over the directions (1, m), (0, 1): the squared norm monotone as written, for all "
       "0 <= s <= t <= 1 (Lemmas L4, L6 only)",
       norm_directions_sentences(c, "L")};
-}
-
-std::vector<Sentence> norm_directions_sentences(const ConditionOnDomain& c, const std::string& level) {
-  return against(c, c.prefix + "directions.", level, norm_property_directions(c.B, level));
 }
 
 }  // namespace affinterp::proofs

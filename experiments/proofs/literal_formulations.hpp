@@ -30,10 +30,6 @@ FormulationPlan area_literal(const ConditionOnDomain& c);
 /// sentences "<prefix>directions.cond-not-prop.<level>" and "…prop-not-cond.<level>".
 std::vector<FormulationPlan> norm_directions(const ConditionOnDomain& c);
 
-/// The condition against norm_property_directions(c.B, level): "<prefix>directions.cond-not-prop.<level>" and
-/// "…prop-not-cond.<level>".
-std::vector<Sentence> norm_directions_sentences(const ConditionOnDomain& c, const std::string& level);
-
 /// The same at level L (the squared norm monotone as written; lemmas L4, L6), as an attempt for the record.
 AttemptPlan norm_directions_literal(const ConditionOnDomain& c);
 

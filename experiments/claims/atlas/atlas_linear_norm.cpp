@@ -27,6 +27,8 @@ const ClaimDeclaration claim{{
 //   circle) nor the condition (sym and AᵀA are conjugated alike, and congruence keeps ⪰); the rotation that
 //   diagonalises sym(A) brings A to [[p, −k], [k, r]] (p, r the eigenvalues of sym(A), k = (c − b)/2; the skew
 //   part commutes with rotations). Then level N (Lemmas L3, L4, L6, L8) in p, r, k with ν quantified.
+// Second formulations without Dines' theorem (issue 17): in the normal form, the directions (1, m), (0, 1) at levels
+//   D and E, each lemma a sentence (L7's rotation: lemma.L7.normal-form).
 // Sizes: the sentences are the same at every size; random points 200 (quick) / 2000 (full) in a, b, c, d.
 
 AtlasProof proof() {
@@ -41,7 +43,7 @@ AtlasProof proof() {
   const logic::Formula domain = logic::greater(p * r + k * k, 0);  // det A > 0
   const logic::Formula property = proofs::norm_property(normal_form, "N");
   // Issue 17: without Dines' theorem, over the directions (1, m), (0, 1) in the normal form; the normal form's
-  // rotation decided as a sentence. In a, b, c, d (an attempt) neither decider answers.
+  // rotation decided as a sentence.
   std::vector<proofs::FormulationPlan> formulations =
       proofs::norm_directions({"conj.", {"p", "r", "k"}, domain, condition, normal_form});
   for (proofs::FormulationPlan& f : formulations) {
@@ -51,8 +53,6 @@ AtlasProof proof() {
         f.method;
     f.sentences.insert(f.sentences.begin(), proofs::lemma_L7_normal_form());
   }
-  const proofs::PolyMat2 general{
-      {{Polynomial::variable("a"), Polynomial::variable("b")}, {Polynomial::variable("c"), Polynomial::variable("d")}}};
   return AtlasProof{
       .scope = cell.domain_words,
       .method =
@@ -67,10 +67,6 @@ AtlasProof proof() {
       .identities = {},
       .cites = std::string(proofs::citations::dines),
       .formulations = formulations,
-      .attempts = {{.formulation = "Def 2.2.2 at level E over the directions (1, m), (0, 1) in a, b, c, d (no normal "
-                                   "form): QEPCAD's McCallum projection and Z3",
-                    .sentences = proofs::norm_directions_sentences(
-                        {"", cell.variables, cell.domain, cell.condition_formula(), general}, "E")}},
   };
 }
 

@@ -78,10 +78,7 @@ ProofPlan proof_plan() {
             half_slope - half_slope.substitute("t", 0) - var("t") * (Q - P)}},
           std::string(proofs::citations::dines),
           proofs::norm_directions(printed),
-          {proofs::norm_directions_literal(printed),
-           {.formulation = "Def 2.2.2 at level E for every unit v (v1^2 + v2^2 = 1, no directions; Lemmas L1, L2, L4)",
-            .sentences = {cond_not_prop("printed.", "E", variables, domain, condition, norm_property(S, "E")),
-                          prop_not_cond("printed.", "E", variables, domain, condition, norm_property(S, "E"))}}}};
+          {proofs::norm_directions_literal(printed)}};
 }
 
 Outcome check(const ClaimContext& ctx) {
