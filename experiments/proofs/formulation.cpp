@@ -1,5 +1,7 @@
 #include "experiments/proofs/formulation.hpp"
 
+#include <algorithm>
+
 namespace affinterp::proofs {
 
 namespace {
@@ -44,9 +46,15 @@ std::vector<Attempt> unanswered_runs(const Proof& proof, const std::string& word
 void add_formulations(Proof& proof, const std::vector<FormulationPlan>& formulations,
                       const std::vector<AttemptPlan>& attempts, const SentenceFiles& files,
                       const DeciderLimits& limits) {
+  // A lemma shared by two formulations is one run: recorded once, under the first.
+  const auto recorded = [&](const Attempt& a) {
+    return std::any_of(proof.attempts.begin(), proof.attempts.end(),
+                       [&](const Attempt& b) { return b.sentence == a.sentence && b.tool == a.tool; });
+  };
   for (const FormulationPlan& plan : formulations) {
     proof.formulations.push_back(decide_formulation(proof.scope, plan, files, limits));
-    for (Attempt& a : unanswered_runs(proof.formulations.back(), plan.method)) proof.attempts.push_back(std::move(a));
+    for (Attempt& a : unanswered_runs(proof.formulations.back(), plan.method))
+      if (!recorded(a)) proof.attempts.push_back(std::move(a));
   }
   for (const AttemptPlan& plan : attempts)
     for (Attempt& a : decide_attempt(plan, files)) proof.attempts.push_back(std::move(a));

@@ -53,8 +53,8 @@ std::vector<Attempt> decide_attempt(const AttemptPlan& plan, const SentenceFiles
 /// The runs of `proof`'s sentences that answered nothing, as attempts at the formulation `words`.
 std::vector<Attempt> unanswered_runs(const Proof& proof, const std::string& words);
 
-/// Adds the formulations and the attempts to `proof`: each formulation decided, its unanswered runs and the
-/// attempts recorded.
+/// Adds the formulations and the attempts to `proof`: each formulation decided, its unanswered runs (a run two
+/// formulations share, once) and the attempts recorded.
 void add_formulations(Proof& proof, const std::vector<FormulationPlan>& formulations,
                       const std::vector<AttemptPlan>& attempts, const SentenceFiles& files,
                       const DeciderLimits& limits);
