@@ -25,7 +25,7 @@ using GiNaC::matrix;
 /// The names of every symbol of the identities.
 const char* const names[] = {"t",  "a",  "b",  "c", "d",   "b11", "b12",  "b21", "b22", "v1",
                              "v2", "co", "si", "x", "y",   "h",   "beta", "phi", "sg",  "pi",
-                             "B",  "l1", "l2", "E", "u11", "u12", "u21",  "u22"};
+                             "B",  "l1", "l2", "E", "u11", "u12", "u21",  "u22", "l"};
 
 /// One symbol per name, shared by every identity and by the parser of the committed scripts.
 const GiNaC::symbol& sym(const std::string& name) {
@@ -98,6 +98,11 @@ std::vector<Identity> lemma_identities() {
                   W.determinant() * Bm.determinant()});
   list.push_back({"L5.norm-left-rotation", "||R w||^2 = (co^2 + si^2)||w||^2", norm_squared(R.mul(v)),
                   rotation_gram() * norm_squared(v)});
+
+  // L6: the squared norm of a blend is homogeneous of degree 2 in v (the directions of issue 17's formulations).
+  list.push_back({"L6.norm-homogeneous", "||((1-t)I + tB)(l v)||^2 = l^2 ||((1-t)I + tB)v||^2",
+                  norm_squared(blend(Bm).mul(v.mul_scalar(sym("l")))),
+                  GiNaC::pow(sym("l"), 2) * norm_squared(blend(Bm).mul(v))});
 
   // L7: conjugation by a rotation O = R.
   const matrix A = mat(sym("a"), sym("b"), sym("c"), sym("d")), J = mat(0, -1, 1, 0);

@@ -1,5 +1,6 @@
-// What a proof records: which deciders decided every sentence, and when it proves an equivalence.
+// What a proof records: which deciders decided every sentence, when it proves an equivalence, and what was tried.
 #include "experiments/proofs/decide_sentence.hpp"
+#include "experiments/proofs/formulation.hpp"
 
 #include <gtest/gtest.h>
 
@@ -30,4 +31,25 @@ TEST(Proof, ADeciderThatFailedOnOneSentenceIsNotNamed) {
   EXPECT_EQ(p.checked_by, (std::vector<std::string>{"z3"}));
   EXPECT_FALSE(p.decided_by_two());
   EXPECT_FALSE(p.all_empty());
+}
+
+TEST(Formulation, UnansweredRunsAreAttemptsWithTheirFormulation) {
+  Proof p = make_proof("", "", {sentence("cond-not-prop.L", "empty", "unknown", "empty")});
+  p.sentences.front().runs.front().reason = "qepcad: no answer within the time limit";
+  p.sentences.front().runs.front().cpu_seconds = 600.2;
+  const std::vector<Attempt> attempts = unanswered_runs(p, "level L");
+  ASSERT_EQ(attempts.size(), 1u);
+  EXPECT_EQ(attempts[0].formulation, "level L");
+  EXPECT_EQ(attempts[0].sentence, "cond-not-prop.L");
+  EXPECT_EQ(attempts[0].tool, "qepcad");
+  EXPECT_EQ(attempts[0].cpu_seconds, 600.2);
+  EXPECT_EQ(attempts[0].outcome, "qepcad: no answer within the time limit");
+}
+
+TEST(Formulation, AFormulationNoDeciderCanBeGivenIsRecordedWithItsReason) {
+  const std::vector<Attempt> attempts =
+      decide_attempt({.formulation = "as written", .sentences = {}, .not_expressible = "transcendental in t"}, {});
+  ASSERT_EQ(attempts.size(), 1u);
+  EXPECT_TRUE(attempts[0].tool.empty());
+  EXPECT_EQ(attempts[0].outcome, "transcendental in t");
 }

@@ -46,6 +46,22 @@ TEST(Transcript, RoundTripsThroughItsText) {
   EXPECT_FALSE(t->answers("qepcad", "(check-sat)\n")) << "another decider";
 }
 
+TEST(Transcript, KeepsCpuTimeAndPeakMemoryWhenRecorded) {
+  Transcript with = example();
+  with.cpu_seconds = 12.5;
+  with.max_rss_kb = 786440;
+  const std::optional<Transcript> t = parse_transcript(to_text(with));
+  ASSERT_TRUE(t.has_value());
+  EXPECT_EQ(t->cpu_seconds, 12.5);
+  EXPECT_EQ(t->max_rss_kb, 786440);
+  EXPECT_EQ(t->output, "unsat\n");
+  // Transcripts written before these lines were recorded have neither.
+  const std::optional<Transcript> old = parse_transcript(to_text(example()));
+  ASSERT_TRUE(old.has_value());
+  EXPECT_FALSE(old->cpu_seconds.has_value());
+  EXPECT_FALSE(old->max_rss_kb.has_value());
+}
+
 TEST(Transcript, ATextWithoutTheHeaderIsNoTranscript) {
   EXPECT_FALSE(parse_transcript("unsat\n").has_value());
   std::string text = to_text(example());

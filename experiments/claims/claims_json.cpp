@@ -9,13 +9,16 @@ namespace {
 
 nlohmann::json optional_json(const auto& value) { return value ? nlohmann::json(*value) : nlohmann::json(nullptr); }
 
-nlohmann::json proof_json(const std::optional<Proof>& proof) {
-  if (!proof) return nullptr;
+nlohmann::json formulation_json(const Proof& proof) {
   nlohmann::json sentences = nlohmann::json::array();
-  for (const ProofSentence& s : proof->sentences) {
+  for (const ProofSentence& s : proof.sentences) {
     nlohmann::json runs = nlohmann::json::array();
-    for (const ProofSentence::Run& r : s.runs)
-      runs.push_back({{"tool", r.tool}, {"file", r.file}, {"result", r.result}, {"seconds", r.seconds}});
+    for (const ProofSentence::Run& r : s.runs) {
+      nlohmann::json run = {{"tool", r.tool}, {"file", r.file}, {"result", r.result}, {"seconds", r.seconds}};
+      if (r.cpu_seconds) run["cpu_seconds"] = *r.cpu_seconds;
+      if (r.max_rss_kb) run["max_rss_kb"] = *r.max_rss_kb;
+      runs.push_back(run);
+    }
     // "file" and "seconds" of the sentence are its first decider's, as the format names them.
     sentences.push_back({{"name", s.name},
                          {"meaning", s.meaning},
@@ -26,8 +29,29 @@ nlohmann::json proof_json(const std::optional<Proof>& proof) {
                          {"runs", runs}});
   }
   nlohmann::json out = {
-      {"scope", proof->scope}, {"method", proof->method}, {"checked_by", proof->checked_by}, {"sentences", sentences}};
-  if (!proof->cites.empty()) out["cites"] = proof->cites;
+      {"scope", proof.scope}, {"method", proof.method}, {"checked_by", proof.checked_by}, {"sentences", sentences}};
+  if (!proof.cites.empty()) out["cites"] = proof.cites;
+  return out;
+}
+
+nlohmann::json proof_json(const std::optional<Proof>& proof) {
+  if (!proof) return nullptr;
+  nlohmann::json out = formulation_json(*proof);
+  if (!proof->formulations.empty()) {
+    out["formulations"] = nlohmann::json::array();
+    for (const Proof& f : proof->formulations) out["formulations"].push_back(formulation_json(f));
+  }
+  if (!proof->attempts.empty()) {
+    out["attempts"] = nlohmann::json::array();
+    for (const proofs::Attempt& a : proof->attempts)
+      out["attempts"].push_back({{"formulation", a.formulation},
+                                 {"sentence", a.sentence},
+                                 {"tool", a.tool},
+                                 {"file", a.file},
+                                 {"cpu_seconds", optional_json(a.cpu_seconds)},
+                                 {"max_rss_kb", optional_json(a.max_rss_kb)},
+                                 {"outcome", a.outcome}});
+  }
   return out;
 }
 

@@ -46,7 +46,8 @@ ProveSummary prove_claims(const ClaimRegistry& registry, const ProveOptions& opt
     for (const proofs::PlannedRun& run : plan) {
       if (decided.contains(run.transcript_file())) continue;
       const std::string stale = proofs::staleness(run);
-      if (stale.empty() && !options.all) continue;
+      // An attempt answers nothing: --all re-decides the proofs' runs only.
+      if (stale.empty() && (!options.all || run.limits.attempt)) continue;
       ++why[stale.empty() ? "re-decided (--all)" : stale];
       todo.push_back(run);
     }

@@ -52,17 +52,27 @@ DeciderRun decider_run(const Decider& decider, const Sentence& sentence, const f
     transcript = run_decider(decider, input, input_text, limits);
   } else if (transcript = read_transcript(files.answers / transcript_name);
              !transcript || !transcript->answers(decider.tool, input_text)) {
-    DeciderRun missing{std::string(decider.tool), "", {}, 0};
+    DeciderRun missing{std::string(decider.tool), "", {}, 0, {}, {}};
     missing.answer.reason = std::string(decider.tool) + ": no stored answer for this text of the sentence (" +
                             (transcript ? "the input changed" : "none") + "; `affinterp prove` decides it)";
     return missing;
   }
   if (files.answers.empty() || fs::weakly_canonical(dir) != fs::weakly_canonical(files.answers))
     write_transcript(dir / transcript_name, *transcript);
-  return {std::string(decider.tool), "", answer_of(*transcript, input_text), transcript->seconds};
+  return {
+      std::string(decider.tool), "", answer_of(*transcript, input_text), transcript->seconds, transcript->cpu_seconds,
+      transcript->max_rss_kb};
 }
 
 }  // namespace
+
+std::vector<std::string> hong_projection(const logic::Formula& sentence) {
+  // One operator per projection: from n variables down to 1, the first entry for 2-variate polynomials.
+  const std::size_t variables = logic::prenex(sentence).bound_variables().size();
+  std::string ops;
+  for (std::size_t k = 1; k < variables; ++k) ops += (k > 1 ? ",h" : "h");
+  return {"proj-operator (" + ops + ")"};
+}
 
 std::string SentenceDecision::answers() const {
   std::string text = name + " (";
@@ -86,8 +96,9 @@ SentenceDecision decide_sentence(const Sentence& sentence, const SentenceFiles& 
   const std::string title =
       (files.reference.empty() ? "" : fs::path(files.reference).filename().string() + " ") + sentence.name;
 
-  const std::string qepcad_text =
-      logic::to_qepcad(sentence.formula, {.title = title, .free = {}, .order = sentence.qepcad_order, .commands = {}});
+  const std::string qepcad_text = logic::to_qepcad(
+      sentence.formula,
+      {.title = title, .free = {}, .order = sentence.qepcad_order, .commands = {}, .setup = sentence.qepcad_setup});
   const std::string smt_text = logic::to_smtlib(sentence.formula, title);
   const std::string prefix = files.reference.empty() ? "" : files.reference + "/";
   SentenceDecision decision;
@@ -128,7 +139,8 @@ ProofSentence to_proof_sentence(const Sentence& sentence, const SentenceDecision
   if (decision.disagreement) throw std::runtime_error("the deciders disagree on the sentence " + decision.answers());
   ProofSentence s{sentence.name, sentence.meaning, std::string(to_string(decision.result)), {}, decision.structural};
   for (const DeciderRun& r : decision.runs)
-    s.runs.push_back({r.tool, r.file, std::string(to_string(r.answer.result)), r.seconds});
+    s.runs.push_back({r.tool, r.file, std::string(to_string(r.answer.result)), r.seconds, r.cpu_seconds, r.max_rss_kb,
+                      r.answer.reason});
   return s;
 }
 

@@ -22,7 +22,13 @@ struct Sentence {
   logic::Formula formula;  ///< closed: every variable quantified
   /// QEPCAD's preferred variable order inside each quantifier block (it eliminates the last one first).
   std::vector<std::string> qepcad_order;
+  /// QEPCAD commands before its default ones, e.g. {"proj-operator (h,h,h)"} (logic::QepcadInput::setup).
+  std::vector<std::string> qepcad_setup{};
 };
+
+/// QEPCAD's command selecting Hong's projection at every level of `sentence` (complete, larger than McCallum's, which
+/// fails on some sentences with "Error! Delineating polynomial should be added …"), for Sentence::qepcad_setup.
+std::vector<std::string> hong_projection(const logic::Formula& sentence);
 
 /// Where a sentence's files go, and where its answers come from.
 struct SentenceFiles {
@@ -40,6 +46,8 @@ struct DeciderRun {
   std::string file;  ///< reference/name.ext
   DeciderAnswer answer;
   double seconds = 0;
+  std::optional<double> cpu_seconds{};  ///< from the transcript, when it records them
+  std::optional<long> max_rss_kb{};
 };
 
 struct SentenceDecision {

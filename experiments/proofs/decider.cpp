@@ -91,7 +91,9 @@ Transcript run_decider(const Decider& decider, const std::filesystem::path& inpu
                sha256_hex(input_text),
                limits.seconds,
                r.seconds,
-               without_timings(r.output)};
+               without_timings(r.output),
+               r.cpu_seconds,
+               r.max_rss_kb};
   if (r.not_found) {
     t.output += "# not installed (Debian package " + std::string(decider.debian_package) + ")\n";
   } else if (r.timed_out) {

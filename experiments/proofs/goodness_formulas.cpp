@@ -84,6 +84,7 @@ Formula norm_property(const PolyMat2& B, const std::string& level) {
   const Polynomial v1 = var("v1"), v2 = var("v2");
   const Formula unit = logic::equal(v1 * v1 + v2 * v2, 1);
   const Polynomial q = norm_squared_of_blend(B, v1, v2, "t");
+  if (level == "L") return logic::forall({"v1", "v2"}, logic::implies(unit, monotone_literal(q, "t")));
   if (level == "D") return logic::forall({"v1", "v2"}, logic::implies(unit, monotone_derivative(q, "t")));
   if (level == "E") {
     // Lemma L3: ½ q′ = P(v) + t‖Mv‖² is affine with slope ≥ 0.
@@ -106,6 +107,22 @@ Formula norm_property(const PolyMat2& B, const std::string& level) {
     return positive_semidefinite(minus_Q) || logic::exists({"nu"}, greater_equal(nu, 0) && positive_semidefinite(W));
   }
   throw std::invalid_argument("norm_property: no level " + level);
+}
+
+Formula norm_property_directions(const PolyMat2& B, const std::string& level) {
+  const auto monotone = [&](const Polynomial& f) {
+    if (level == "L") return monotone_literal(f, "t");
+    if (level == "D") return monotone_derivative(f, "t");
+    if (level == "E") {
+      // Lemma L2 (b) reads f′ at t = 0 and 1 when it is affine.
+      if (f.degree_in("t") > 2) throw std::logic_error("norm_property_directions level E: not quadratic in t");
+      return monotone_endpoints(f, "t");
+    }
+    throw std::invalid_argument("norm_property_directions: no level " + level);
+  };
+  const Polynomial zero(0), one(1);
+  return logic::forall({"m"}, monotone(norm_squared_of_blend(B, one, var("m"), "t"))) &&
+         monotone(norm_squared_of_blend(B, zero, one, "t"));
 }
 
 Polynomial svd_norm_G(const Polynomial& x, const Polynomial& y, const Polynomial& beta, const Polynomial& t) {

@@ -55,9 +55,16 @@ Formula monotone_endpoints(const Polynomial& f, const std::string& t);
 
 /// Def 2.2.1 for det A(t) = det((1−t)I + tB) at level "L", "D" or "E" (E needs deg_t ≤ 2 and f(0) = 1, L2).
 Formula area_property(const PolyMat2& B, const std::string& level);
-/// Def 2.2.2 for ‖((1−t)I + tB)v‖ at level "D" (unit v, derivative), "E" (unit v, ¬(P(v) < 0 < Q(v)), L3, L4)
+/// Def 2.2.2 for ‖((1−t)I + tB)v‖ at level "L" (unit v, the squared norm monotone as written: L4), "D" (unit v,
+/// derivative), "E" (unit v, ¬(P(v) < 0 < Q(v)), L3, L4)
 /// or "N" (Dines, L6, L8), with P = sym M, Q = P + MᵀM, M = B − I.
 Formula norm_property(const PolyMat2& B, const std::string& level);
+
+/// Def 2.2.2 for ‖((1−t)I + tB)v‖ over the directions v = (1, m), every real m, and v = (0, 1): every unit vector
+/// is a non-zero multiple of one (Lemma L6, decided as lemma_L6_directions) and ‖A(t)(λv)‖ = |λ|‖A(t)v‖. At level
+/// "L" (the squared norm monotone as written, for all 0 <= s <= t <= 1; Lemma L4), "D" (L1) or "E" (L1, L2); m is
+/// bound inside. No lemma about quadratic forms (L3, Dines' L8) is used.
+Formula norm_property_directions(const PolyMat2& B, const std::string& level);
 
 /// Lemma L9's G(t) = 4(x−1)(y−1)(1 + t(x−1))(1 + t(y−1)) − β²t²(x−y)²(2 + t(x+y−2))² for the SVD homotopy.
 Polynomial svd_norm_G(const Polynomial& x, const Polynomial& y, const Polynomial& beta, const Polynomial& t);

@@ -21,6 +21,8 @@ struct ProcessResult {
   bool timed_out = false;  ///< killed at the wall-clock or the CPU-time limit
   bool not_found = false;  ///< the program could not be started
   double seconds = 0;      ///< wall time
+  double cpu_seconds = 0;  ///< user + system CPU time of the child (wait4)
+  long max_rss_kb = 0;     ///< the child's peak resident set size, in KiB (wait4)
 };
 
 /// Runs `argv` (argv[0] looked up in PATH) with standard input from `input` (or /dev/null when empty).

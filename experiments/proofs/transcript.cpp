@@ -48,7 +48,13 @@ std::string to_text(const Transcript& t) {
       << "# cpu-limit-seconds: " << t.cpu_limit_seconds << "\n";
   char seconds[32];
   std::snprintf(seconds, sizeof seconds, "%.2f", t.seconds);
-  out << "# seconds: " << seconds << "\n" << t.output;
+  out << "# seconds: " << seconds << "\n";
+  if (t.cpu_seconds) {
+    std::snprintf(seconds, sizeof seconds, "%.2f", *t.cpu_seconds);
+    out << "# cpu-seconds: " << seconds << "\n";
+  }
+  if (t.max_rss_kb) out << "# max-rss-kb: " << *t.max_rss_kb << "\n";
+  out << t.output;
   return out.str();
 }
 
@@ -75,7 +81,17 @@ std::optional<Transcript> parse_transcript(const std::string& text) {
   if (!l || !s || t.input_sha256.size() != 64) return std::nullopt;
   t.cpu_limit_seconds = *l;
   t.seconds = *s;
-  const std::streamoff header_end = in.tellg();
+  // The optional lines: CPU time and peak memory.
+  std::streamoff header_end = in.tellg();
+  while (header_end >= 0 && std::getline(in, line)) {
+    if (const std::optional<std::string> v = header_value(line, "cpu-seconds"); v && to_number(*v))
+      t.cpu_seconds = to_number(*v);
+    else if (const std::optional<std::string> m = header_value(line, "max-rss-kb"); m && to_number(*m))
+      t.max_rss_kb = static_cast<long>(*to_number(*m));
+    else
+      break;
+    header_end = in.tellg();
+  }
   t.output = header_end < 0 ? "" : text.substr(static_cast<std::size_t>(header_end));
   return t;
 }

@@ -9,7 +9,10 @@
 //   # input: cond-not-prop.E.smt2 sha256:5d41402abc4b2a76b9719d911017c592…
 //   # cpu-limit-seconds: 60
 //   # seconds: 0.21
+//   # cpu-seconds: 0.18
+//   # max-rss-kb: 31756
 //   unsat
+// (the last two lines are absent in transcripts written before they were recorded).
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -23,8 +26,10 @@ struct Transcript {
   std::string input;         ///< the input file's name, e.g. "cond-not-prop.E.smt2"
   std::string input_sha256;  ///< of the input file's text, lower-case hex
   double cpu_limit_seconds = 0;
-  double seconds = 0;  ///< wall time the decider took
-  std::string output;  ///< what the decider printed, timings removed
+  double seconds = 0;                   ///< wall time the decider took
+  std::string output;                   ///< what the decider printed, timings removed
+  std::optional<double> cpu_seconds{};  ///< its CPU time (user + system)
+  std::optional<long> max_rss_kb{};     ///< its peak resident set size, KiB
 
   /// Whether this transcript answers `input_text` as read by `tool` (any version).
   bool answers(std::string_view tool_name, std::string_view input_text) const;

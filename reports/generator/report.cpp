@@ -64,22 +64,24 @@ std::string figure_link(const json& figures) {
   return link;
 }
 
+/// The checkers that answered every sentence of a formulation they ran on, "qepcad, z3".
+std::string checkers(const json& proof) {
+  std::string names;
+  for (const auto& tool : proof.value("checked_by", json::array()))
+    names += (names.empty() ? "" : ", ") + tool.get<std::string>();
+  return names.empty() ? "none" : names;
+}
+
 /// How strong a claim's verdict is, in the words of the report's "Strength" list.
 std::string strength_words(const json& claim) {
   const std::string strength = claim.value("strength", "unstated");
   const json proof = claim.value("proof", json());
-  const auto checkers = [&] {
-    std::string names;
-    for (const auto& d : proof.value("checked_by", json::array()))
-      names += (names.empty() ? "" : ", ") + d.get<std::string>();
-    return names;
-  };
   if (strength == "proved") return "proved for all reals";
-  if (strength == "proved-one-decider") return "proved, one decider (" + checkers() + ")";
+  if (strength == "proved-one-decider") return "proved, one decider (" + checkers(proof) + ")";
   if (strength == "proved-citing") return "proved, citing " + proof.value("cites", std::string("?"));
   if (strength == "exact-counterexample") {
     if (!proof.is_object() || proof.value("checked_by", json::array()).size() < 2) return "exact counterexample";
-    return "exact counterexample; rest proved (" + checkers() + ")";
+    return "exact counterexample; rest proved (" + checkers(proof) + ")";
   }
   if (strength == "grid") return "grid only";
   if (strength == "sample") return "sample only";
@@ -87,12 +89,10 @@ std::string strength_words(const json& claim) {
   return "not stated";
 }
 
-/// The sentences of a proof with each decider's result and the files to rerun them with.
-void write_proof(std::ostringstream& md, const json& proof) {
-  md << "**Proof for all reals.** Scope: " << proof.value("scope", "") << ". Method: " << proof.value("method", "")
-     << ". Decided by";
-  for (const auto& tool : proof["checked_by"]) md << " " << tool.get<std::string>();
-  md << ".\n\n| sentence | meaning | result | each checker: its answer (transcript), the time it took |\n"
+/// A formulation's sentences with each checker's result and the files to rerun them with; whether one is
+/// structural.
+bool write_sentences(std::ostringstream& md, const json& proof) {
+  md << "| sentence | meaning | result | each checker: its answer (transcript), the time it took |\n"
         "|---|---|---|---|\n";
   bool any_structural = false;
   for (const auto& s : proof["sentences"]) {
@@ -116,10 +116,52 @@ void write_proof(std::ostringstream& md, const json& proof) {
     md << "| " << cell(s.value("name", "")) << " | " << cell(s.value("meaning", "")) << " | " << s.value("result", "")
        << (structural ? " (structural)" : "") << " | " << cell(runs) << " |\n";
   }
+  return any_structural;
+}
+
+/// What was tried and not answered (issue 17): formulation, tool, CPU time, peak memory, outcome.
+void write_attempts(std::ostringstream& md, const json& attempts) {
+  md << "**Tried, not answered** (kept for the record; the label rests on the formulations above):\n\n"
+        "| formulation | sentence | tool | CPU time | peak memory | outcome |\n|---|---|---|---|---|---|\n";
+  for (const auto& a : attempts) {
+    std::ostringstream cpu, memory;
+    cpu.precision(1);
+    cpu << std::fixed;
+    if (a.value("cpu_seconds", json()).is_number())
+      cpu << a["cpu_seconds"].get<double>() << " s";
+    else
+      cpu << "—";
+    if (a.value("max_rss_kb", json()).is_number())
+      memory << a["max_rss_kb"].get<long>() / 1024 << " MiB";
+    else
+      memory << "—";
+    const std::string file = a.value("file", ""), tool = a.value("tool", "");
+    md << "| " << cell(a.value("formulation", "")) << " | " << cell(a.value("sentence", "")) << " | "
+       << (tool.empty()   ? "—"
+           : file.empty() ? tool
+                          : "[" + tool + "](" + file + ")")
+       << " | " << cpu.str() << " | " << memory.str() << " | " << cell(a.value("outcome", "")) << " |\n";
+  }
+  md << "\n";
+}
+
+/// The sentences of a proof with each decider's result and the files to rerun them with; its further
+/// formulations (issue 17) the same way; what was tried and not answered.
+void write_proof(std::ostringstream& md, const json& proof) {
+  md << "**Proof for all reals.** Scope: " << proof.value("scope", "") << ". Method: " << proof.value("method", "")
+     << ". Decided by " << checkers(proof) << ".\n\n";
+  bool any_structural = write_sentences(md, proof);
+  int k = 1;
+  for (const auto& f : proof.value("formulations", json::array())) {
+    md << "\n**Formulation " << ++k << ".** Method: " << f.value("method", "") << ". Decided by " << checkers(f)
+       << ".\n\n";
+    any_structural = write_sentences(md, f) || any_structural;
+  }
   if (any_structural)
     md << "\n*Structural*: empty for propositional reasons alone (every polynomial atom replaced by a boolean, "
           "the sentence stays unsatisfiable), so no evidence for the claim; its weight rests on the lemmas.\n";
   md << "\n";
+  if (proof.contains("attempts")) write_attempts(md, proof["attempts"]);
 }
 
 void write_summary_table(std::ostringstream& md, const json& claims) {
@@ -423,14 +465,19 @@ std::string render_markdown(const json& doc) {
         "- **inconclusive**: not decided; the finding says why.\n"
         "- **pending**: no check implemented yet.\n\n"
         "## Strength\n\n"
-        "- **proved for all reals**: the claim (and its correction, if any) reduces, by the lemmas written out in "
-        "`proofs/LEMMAS.md`, to first-order sentences over the reals each answered by two independent deciders "
-        "(of QEPCAD B, Z3 and cvc5) and polynomial identities each checked by two independent checkers (GiNaC, an "
-        "exact degree grid); a transcript with an error or a warning answers nothing. The sentence files and "
-        "each decider's transcript are in `proofs/` and rerun with the tool alone.\n"
+        "- **proved for all reals**: one complete formulation of the claim (and of its correction, if any) "
+        "reduces, by the lemmas written out in `proofs/LEMMAS.md`, to first-order sentences over the reals each "
+        "answered by two independent deciders (of QEPCAD B, Z3 and cvc5) and polynomial identities each checked by "
+        "two independent checkers (GiNaC, an exact degree grid), citing no external theorem; a transcript with an "
+        "error or a warning answers nothing. The sentence files and each decider's transcript are in `proofs/` "
+        "and rerun with the tool alone. A proof may have several formulations: the lemma chain, and one taken "
+        "as nearly as written from the paper's definition (Def 2.2.1: for all 0 <= s <= t <= 1; Def 2.2.2: for "
+        "every t in [0, 1] and every unit v) with as few lemmas as a decider answers, each lemma it uses a "
+        "sentence of its own. What was tried and not answered (tool, CPU time, memory, outcome), and what no "
+        "decider can be given (a transcendental homotopy), is listed under \"Tried, not answered\".\n"
         "- **proved, one decider (name)**: as above, but some sentence was answered by the named decider only.\n"
         "- **proved, citing (theorem)**: as above, with an external published theorem as a step (full reference "
-        "given).\n"
+        "given), and no formulation without it answered by two deciders.\n"
         "- Sentences marked **structural** are empty for propositional reasons alone and count as no evidence; "
         "a proof of structural sentences only proves nothing.\n"
         "- **exact counterexample**: the printed claim fails at an exact (rational) point anyone can re-verify. "

@@ -99,6 +99,7 @@ std::string to_qepcad(const Formula& f, const QepcadInput& input) {
   for (const QuantifierBlock& block : p.prefix)
     for (const std::string& v : block.variables) text += (block.universal ? "(A " : "(E ") + v + ")";
   text += matrix + ".\n";
+  for (const std::string& c : input.setup) text += c + "\n";
   std::vector<std::string> commands = input.commands;
   if (commands.empty())
     commands = p.existential() && input.free.empty()

@@ -21,6 +21,9 @@ struct QepcadInput {
   /// "go go go d-witness-list finish" (d-witness-list prints the sample point of a true cell, a witness),
   /// otherwise "finish".
   std::vector<std::string> commands;
+  /// Commands before `commands` (or the default ones), e.g. "proj-operator (h,h,m)" to choose Hong's projection
+  /// where McCallum's, QEPCAD's default, is incomplete (QEPCAD then prints "Error! Delineating polynomial …").
+  std::vector<std::string> setup{};
 };
 
 /// p with integer coefficients (times the positive lcm of its denominators) in QEPCAD's syntax:

@@ -48,6 +48,10 @@ AtlasProof proof() {
       .z3_only = {},
       .identities = {},
       .cites = std::string(proofs::citations::exponential),
+      .formulations = {},
+      .attempts = {{.formulation = "Def 2.2.2 as written for R_{t theta} S^t",
+                    .sentences = {},
+                    .not_expressible = std::string(proofs::not_first_order_exponential)}},
   };
 }
 

@@ -1,6 +1,7 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
 #include "experiments/proofs/goodness_formulas.hpp"
+#include "experiments/proofs/literal_formulations.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
@@ -21,6 +22,8 @@ const ClaimDeclaration claim{{
 // Method: level E — monotone on [0, 1] iff the derivative has one sign there (Lemma L1); the derivative is
 //   affine, so its signs at t = 0, 1 (tr A − 2 and 2 det A − tr A) decide it, and positivity on [0, 1] of a
 //   monotone f with f(0) = 1 is f(1) = det A > 0 (Lemma L2). Two sentences in a, b, c, d.
+// Second formulation (issue 17): Def 2.2.1 as written (level L), no lemma; QEPCAD with Hong's projection (its
+//   default, McCallum's, errs on these sentences in a, b, c, d).
 // Sizes: the sentences are the same at every size; random points 200 (quick) / 2000 (full).
 
 AtlasProof proof() {
@@ -36,6 +39,8 @@ AtlasProof proof() {
       .sentences = condition_sentences(cell, "E", proofs::area_property(A, "E")),
       .z3_only = {},
       .identities = {},
+      .cites = {},
+      .formulations = {proofs::area_literal({"", cell.variables, cell.domain, cell.condition_formula(), A, true})},
   };
 }
 

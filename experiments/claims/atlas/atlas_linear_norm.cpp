@@ -3,6 +3,8 @@
 #include "experiments/proofs/citations.hpp"
 #include "experiments/proofs/condition_sentences.hpp"
 #include "experiments/proofs/goodness_formulas.hpp"
+#include "experiments/proofs/lemma_sentences.hpp"
+#include "experiments/proofs/literal_formulations.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
@@ -25,6 +27,8 @@ const ClaimDeclaration claim{{
 //   circle) nor the condition (sym and AᵀA are conjugated alike, and congruence keeps ⪰); the rotation that
 //   diagonalises sym(A) brings A to [[p, −k], [k, r]] (p, r the eigenvalues of sym(A), k = (c − b)/2; the skew
 //   part commutes with rotations). Then level N (Lemmas L3, L4, L6, L8) in p, r, k with ν quantified.
+// Second formulations without Dines' theorem (issue 17): in the normal form, the directions (1, m), (0, 1) at levels
+//   D and E, each lemma a sentence (L7's rotation: lemma.L7.normal-form).
 // Sizes: the sentences are the same at every size; random points 200 (quick) / 2000 (full) in a, b, c, d.
 
 AtlasProof proof() {
@@ -38,6 +42,17 @@ AtlasProof proof() {
     condition = logic::substitute(condition, name, by);
   const logic::Formula domain = logic::greater(p * r + k * k, 0);  // det A > 0
   const logic::Formula property = proofs::norm_property(normal_form, "N");
+  // Issue 17: without Dines' theorem, over the directions (1, m), (0, 1) in the normal form; the normal form's
+  // rotation decided as a sentence.
+  std::vector<proofs::FormulationPlan> formulations =
+      proofs::norm_directions({"conj.", {"p", "r", "k"}, domain, condition, normal_form});
+  for (proofs::FormulationPlan& f : formulations) {
+    f.method =
+        "in the normal form [[p, -k], [k, r]] of Lemma L7 (identities; the rotation that brings A to it "
+        "exists: sentence lemma.L7.normal-form): " +
+        f.method;
+    f.sentences.insert(f.sentences.begin(), proofs::lemma_L7_normal_form());
+  }
   return AtlasProof{
       .scope = cell.domain_words,
       .method =
@@ -51,6 +66,7 @@ AtlasProof proof() {
       .z3_only = {},
       .identities = {},
       .cites = std::string(proofs::citations::dines),
+      .formulations = formulations,
   };
 }
 

@@ -1,6 +1,7 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
 #include "experiments/proofs/goodness_formulas.hpp"
+#include "experiments/proofs/literal_formulations.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
@@ -19,6 +20,7 @@ const ClaimDeclaration claim{{
 
 // Reading: Def 2.2.1; det R_{tθ} = 1 (Lemma L5), so det A_p(t) = det((1−t)I + tS).
 // Method: level E (Lemmas L1, L2, as for atlas.linear.area). Two quantifier-free sentences in x, y, h.
+// Second formulation (issue 17): Def 2.2.1 as written (level L), Lemma L5 the only lemma.
 // Sizes: the sentences are the same at every size; random points 200 (quick) / 2000 (full).
 
 AtlasProof proof() {
@@ -35,6 +37,8 @@ AtlasProof proof() {
       .sentences = condition_sentences(cell, "E", proofs::area_property(S, "E")),
       .z3_only = {},
       .identities = {},
+      .cites = {},
+      .formulations = {proofs::area_literal({"", cell.variables, cell.domain, cell.condition_formula(), S})},
   };
 }
 

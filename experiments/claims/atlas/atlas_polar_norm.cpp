@@ -2,6 +2,7 @@
 #include "experiments/claims/claim.hpp"
 #include "experiments/proofs/citations.hpp"
 #include "experiments/proofs/goodness_formulas.hpp"
+#include "experiments/proofs/literal_formulations.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
@@ -22,7 +23,8 @@ const ClaimDeclaration claim{{
 // Method: level N — ‖·‖ monotone iff its square is (L4); with M = S − I, ½ d/dt‖(I + tM)v‖² = P(v) + t‖Mv‖²,
 //   affine with non-negative slope, so monotone for v iff ¬(P(v) < 0 < Q(v)), P = sym M, Q = P + MᵀM (L3),
 //   for all v iff for all v ≠ 0 (L6), iff Q ⪯ 0 or ∃ν ≥ 0: P − νQ ⪰ 0 (Dines, L8). Two sentences in x, y, h
-//   with ν quantified.
+//   with ν quantified. Second formulations without Dines' theorem (issue 17): the directions (1, m), (0, 1) at
+//   levels D and E, each lemma a sentence; level L is tried for the record under thesis.thm-2.2.5.
 // Sizes: the sentences are the same at every size; random points 200 (quick) / 2000 (full).
 
 AtlasProof proof() {
@@ -30,6 +32,7 @@ AtlasProof proof() {
   const proofs::AtlasCell& cell = proofs::atlas_cell(proofs::Homotopy::polar, proofs::Notion::norm);
   const Polynomial h = Polynomial::variable("h");
   const proofs::PolyMat2 S{{{Polynomial::variable("x"), h}, {h, Polynomial::variable("y")}}};
+  const proofs::ConditionOnDomain literal{"", cell.variables, cell.domain, cell.condition_formula(), S};
   return AtlasProof{
       .scope = cell.domain_words,
       .method =
@@ -41,6 +44,8 @@ AtlasProof proof() {
       .z3_only = {},
       .identities = {},
       .cites = std::string(proofs::citations::dines),
+      .formulations = proofs::norm_directions(literal),
+      .attempts = {},
   };
 }
 

@@ -1,6 +1,7 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/claim.hpp"
 #include "experiments/proofs/goodness_formulas.hpp"
+#include "experiments/proofs/literal_formulations.hpp"
 
 namespace affinterp::claims::atlas {
 namespace {
@@ -21,6 +22,7 @@ const ClaimDeclaration claim{{
 // Method: level E — monotone iff the derivative has one sign on [0, 1] (Lemma L1); it is affine, so its
 //   signs at t = 0, 1 decide it, and positivity of a monotone f with f(0) = 1 is f(1) = det D > 0 (Lemma L2).
 //   Two quantifier-free sentences in x, y.
+// Second formulation (issue 17): Def 2.2.1 as written (level L), Lemma L5 the only lemma.
 // Sizes: the sentences are the same at every size; random points 200 (quick) / 2000 (full).
 
 AtlasProof proof() {
@@ -36,6 +38,8 @@ AtlasProof proof() {
       .sentences = condition_sentences(cell, "E", proofs::area_property(D, "E")),
       .z3_only = {},
       .identities = {},
+      .cites = {},
+      .formulations = {proofs::area_literal({"", cell.variables, cell.domain, cell.condition_formula(), D})},
   };
 }
 

@@ -111,6 +111,9 @@ AtlasProof proof() {
                 ((one + t * sg + t * t * pi) * pow(two + sg, 2) - t * t * pow(two + t * sg, 2) * (one + sg + pi))},
            {"L12.G-at-B*: D G(t)|B=N/D = 4 pi (1-t) C (sg^2 - 4 pi), N = 4 pi (1+sg+pi), D = (sg^2-4pi)(2+sg)^2",
             G_at_Bstar_times_D - four * pi * (one - t) * C * (sg * sg - four * pi)}},
+      .attempts = {{.formulation = "Def 2.2.2 as written for R_{t alpha}((1-t)I + tD)R_{t beta}",
+                    .sentences = {},
+                    .not_expressible = std::string(proofs::not_first_order_rotation)}},
   };
 }
 

@@ -128,6 +128,15 @@ Outcome atlas_outcome(const ClaimContext& ctx, const proofs::AtlasCell& cell, co
 
   outcome.proof = proofs::make_proof(proof.scope, proof.method, records);
   outcome.proof->cites = proof.cites;
+  // The formulations closer to the definitions take QEPCAD up to ~80 s of CPU (level D): 300 s each, as the local
+  // claims' sentences.
+  proofs::add_formulations(*outcome.proof, proof.formulations, proof.attempts, ctx.proof_files(), {.seconds = 300});
+  // The formulations prove the same claim: a point in one where the lemma chain finds none is a contradiction, and
+  // the check fails loudly.
+  for (const Proof& formulation : outcome.proof->formulations)
+    for (const ProofSentence& s : formulation.sentences)
+      if (all_empty && s.result == "non-empty")
+        throw std::runtime_error("the formulations of atlas." + cell.id() + " disagree: " + s.name + " is non-empty");
   const std::optional<Strength> strength = proof_strength(*outcome.proof);
   std::string checkers;
   for (const std::string& c : outcome.proof->checked_by) checkers += (checkers.empty() ? "" : ", ") + c;

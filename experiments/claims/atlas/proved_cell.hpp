@@ -7,6 +7,7 @@
 #include "experiments/claims/outcome.hpp"
 #include "experiments/proofs/atlas.hpp"
 #include "experiments/proofs/decide_sentence.hpp"
+#include "experiments/proofs/formulation.hpp"
 
 #include <string>
 #include <vector>
@@ -34,12 +35,16 @@ struct AtlasProof {
   std::vector<std::pair<std::string, logic::Polynomial>> identities;
   /// An external published theorem the method uses as a step (experiments/proofs/citations.hpp); empty: none.
   std::string cites{};
+  /// Further formulations, each a complete proof (issue 17): the literal one first.
+  std::vector<proofs::FormulationPlan> formulations{};
+  /// Formulations tried for the record: decided once under their own limits, or not expressible.
+  std::vector<proofs::AttemptPlan> attempts{};
 };
 
 /// Decides the proof's sentences and assembles the outcome: confirmed and proved when every sentence is empty
-/// (by both deciders, or as `z3_only` allows) and every identity holds; refuted with the deciders' point when a
-/// sentence is non-empty; inconclusive otherwise. Adds the random-point comparison with the suite's exact
-/// decider (when it has one) and the region maps of `slices`.
+/// (by both deciders, or as `z3_only` allows; or every sentence of a further formulation) and every identity holds;
+/// refuted with the deciders' point when a sentence is non-empty; inconclusive otherwise. Adds the random-point
+/// comparison with the suite's exact decider (when it has one) and the region maps of `slices`.
 Outcome atlas_outcome(const ClaimContext& ctx, const proofs::AtlasCell& cell, const AtlasProof& proof,
                       const std::vector<Slice>& slices);
 

@@ -63,7 +63,11 @@ ProofPlan proof_plan() {
                     logic::greater(c, 0) && logic::greater(E, 0) && logic::greater(E2, 0) && log_sign &&
                         logic::less(L * E, 0) && logic::greater(L * E2, 0))},
           {},
-          std::string(proofs::citations::exponential)};
+          std::string(proofs::citations::exponential),
+          {},
+          {{.formulation = "det A^E(t) = (det S)^t monotone, as written",
+            .sentences = {},
+            .not_expressible = std::string(proofs::not_first_order_exponential)}}};
 }
 
 Outcome check(const ClaimContext& ctx) {

@@ -48,7 +48,11 @@ ProofPlan proof_plan() {
                     logic::equal(l1 + l2, x + y) && logic::equal(l1 * l2, det_S) &&
                     (logic::less_equal(l1, 0) || logic::less_equal(l2, 0)))},
       {},
-      std::string(proofs::citations::exponential)};
+      std::string(proofs::citations::exponential),
+      {},
+      {{.formulation = "det A^E(t) > 0 for every real t, as written",
+        .sentences = {},
+        .not_expressible = std::string(proofs::not_first_order_exponential)}}};
 }
 
 Outcome check(const ClaimContext& ctx) {

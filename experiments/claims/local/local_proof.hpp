@@ -8,7 +8,9 @@
 #include "experiments/claims/proof_strength.hpp"
 #include "experiments/proofs/condition_sentences.hpp"
 #include "experiments/proofs/decide_sentence.hpp"
+#include "experiments/proofs/formulation.hpp"
 #include "experiments/proofs/goodness_formulas.hpp"
+#include "experiments/proofs/lemma_sentences.hpp"
 #include "experiments/proofs/witness.hpp"
 
 #include <map>
@@ -26,6 +28,12 @@ using proofs::area_property;
 using proofs::cond_not_prop;
 using proofs::det;
 using proofs::det_of_blend;
+using proofs::lemma_L1;
+using proofs::lemma_L2;
+using proofs::lemma_L2_area;
+using proofs::lemma_L3;
+using proofs::lemma_L4;
+using proofs::lemma_L6_directions;
 using proofs::norm_property;
 using proofs::norm_squared_of_blend;
 using proofs::PolyMat2;
@@ -39,12 +47,6 @@ using proofs::trace;
 using proofs::transpose;
 using proofs::var;
 
-/// The lemmas (reports/proofs/LEMMAS.md) that are sentences themselves, for every quadratic f = 1 + c1 t + c2 t².
-proofs::Sentence lemma_L1();       ///< monotone as written ⇔ f′ of one sign on [0, 1]
-proofs::Sentence lemma_L2();       ///< f′ affine: f′ of one sign on [0, 1] ⇔ read at t = 0, 1
-proofs::Sentence lemma_L2_area();  ///< (f > 0 on [0, 1] ∧ monotone) ⇔ (f(1) > 0 ∧ endpoint-monotone)
-proofs::Sentence lemma_L3();       ///< g affine with slope ≥ 0 takes both strict signs ⇔ g(0) < 0 < g(1)
-
 /// A proof's plan: what it is about, how it reads, and what it decides and checks.
 struct ProofPlan {
   std::string scope;                        ///< the domain, in words
@@ -54,6 +56,10 @@ struct ProofPlan {
   std::vector<std::pair<std::string, Polynomial>> identities;
   /// An external published theorem the method uses as a step (experiments/proofs/citations.hpp); empty: none.
   std::string cites{};
+  /// Further formulations, each a complete proof (issue 17): the literal one first.
+  std::vector<proofs::FormulationPlan> formulations{};
+  /// Formulations tried for the record: decided once under their own limits, or not expressible.
+  std::vector<proofs::AttemptPlan> attempts{};
 };
 
 /// A plan carried out: the proof as claims.json records it, and each sentence's decision (for witnesses).
@@ -68,9 +74,9 @@ struct ProofRun {
   std::string result(const std::string& name) const;
 };
 
-/// Checks the identities (throws std::logic_error naming one that fails), decides every sentence with both
-/// deciders (files in ctx.proof_files(); 60 s per decider at the quick size, 300 s at the full; throws when the
-/// deciders disagree) and assembles the proof.
+/// Checks the identities (throws std::logic_error naming one that fails), reads every sentence's answers
+/// (files in ctx.proof_files(); `affinterp prove` gives each decider 300 s; throws when the deciders disagree),
+/// assembles the proof and adds the further formulations and the attempts.
 ProofRun run_proof(const ClaimContext& ctx, const ProofPlan& plan);
 
 /// A point of the named non-empty sentence's set: the deciders' sample point (or, when they printed none, the
@@ -84,9 +90,9 @@ std::optional<logic::Point> counterexample(const ProofRun& run, const std::strin
 nlohmann::json exact_point(const logic::Point& p);
 
 /// Attaches the proof. A confirmed verdict whose sentences were decided takes the proof's strength
-/// (proof_strength: proved, one decider, citing), and a non-empty sentence then contradicts it (throws
-/// std::runtime_error naming it: the check fails loudly); refuted and corrected verdicts keep an exact counterexample
-/// as their strength, with the proof attached.
+/// (proof_strength: proved, one decider, citing), and a non-empty sentence of any formulation then contradicts it
+/// (throws std::runtime_error naming it: the check fails loudly); refuted and corrected verdicts keep an exact
+/// counterexample as their strength, with the proof attached.
 void attach_proof(Outcome& outcome, ProofRun run);
 
 /// Throws std::runtime_error when the verdict the proof reaches (when it reaches one) differs from the

@@ -129,6 +129,12 @@ ProofPlan proof_plan() {
                 logic::not_equal(var("beta"), 0) && svd_norm_property(Polynomial(2), Polynomial(1), var("beta")))},
       {}};
   plan.sentences.push_back(in_sqrt3("svd-not-good-area.L", "the same at level L", !area_property(D, "L")));
+  // Issue 17: Def 2.2.2 for the SVD homotopy as written is no sentence for a decider.
+  plan.attempts.push_back(
+      {.formulation = "beyond the thesis, svd-good-norm-some-beta as written (Def 2.2.2 for R_{t alpha}((1-t)I + "
+                      "tD)R_{t beta})",
+       .sentences = {},
+       .not_expressible = std::string(proofs::not_first_order_rotation)});
   return plan;
 }
 

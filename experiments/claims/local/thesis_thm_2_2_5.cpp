@@ -6,6 +6,7 @@
 #include "experiments/claims/local/region_figure.hpp"
 #include "experiments/claims/local/simple_values.hpp"
 #include "experiments/proofs/citations.hpp"
+#include "experiments/proofs/literal_formulations.hpp"
 #include "theory/local/goodness.hpp"
 #include "theory/local/thesis_conditions.hpp"
 
@@ -32,7 +33,9 @@ const ClaimDeclaration claim{{
 // Method: proof for all reals (issue 10): the printed condition against Def 2.2.2 as two sentences in x, y, h at
 //   level N (Lemmas L3, L4, L6, L8), decided by QEPCAD B and Z3, with Lemma L3 as its own sentence and the
 //   identities ½ d/dt ‖((1−t)I + tS)v‖² = vᵀPv at t = 0, vᵀQv at t = 1; a third sentence shows the second
-//   conjunct implied by the first on the domain. Second line: over an (x, y, h) grid with xy > h², the printed
+//   conjunct implied by the first on the domain. Second formulations without Dines' theorem (issue 17): the
+//   directions (1, m), (0, 1) at levels D and E, each lemma a sentence (experiments/proofs/literal_formulations.hpp);
+//   level L tried for the record. Second line: over an (x, y, h) grid with xy > h², the printed
 //   condition against the exact decision of Def 2.2.2 (theory/local/goodness.hpp: it fails iff some v has P(v) < 0 <
 //   Q(v), certified by Dines' theorem); a counterexample carries a rational direction where the norm dips. The figure
 //   is the slice h = 1/2.
@@ -55,6 +58,7 @@ ProofPlan proof_plan() {
   const Polynomial P = p11 * v1 * v1 + Polynomial(2) * h * v1 * v2 + p22 * v2 * v2;
   const Polynomial Q =
       P + (p11 * p11 + h * h) * v1 * v1 + Polynomial(2) * (p11 + p22) * h * v1 * v2 + (h * h + p22 * p22) * v2 * v2;
+  const proofs::ConditionOnDomain printed{"printed.", variables, domain, condition, S};
   return {"S = [[x, h], [h, y]] real positive definite (every gamma)",
           "Def 2.2.2 for ((1-t)I + tS)v (R_{t gamma} is orthogonal, Lemma L5) at level N: ||.|| is monotone iff its "
           "square is (L4); 1/2 d/dt ||((1-t)I + tS)v||^2 = P(v) + t||(S - I)v||^2 is affine with slope >= 0 "
@@ -72,7 +76,9 @@ ProofPlan proof_plan() {
            {"1/2 d/dt ||((1-t)I + tS)v||^2 at t = 1 is v^T Q v", half_slope.substitute("t", 1) - Q},
            {"1/2 d/dt ||((1-t)I + tS)v||^2 is affine in t",
             half_slope - half_slope.substitute("t", 0) - var("t") * (Q - P)}},
-          std::string(proofs::citations::dines)};
+          std::string(proofs::citations::dines),
+          proofs::norm_directions(printed),
+          {proofs::norm_directions_literal(printed)}};
 }
 
 Outcome check(const ClaimContext& ctx) {

@@ -62,6 +62,18 @@ ProofPlan proof_plan() {
                                       "x, y, beta where the polar interpolation is good for area and the SVD one not",
                                       variables, domain && !svd_good && polar_good));
   }
+  // Issue 17: Def 2.2.1 as written for both homotopies (level L); the identities of L5 and L11 the only lemmas.
+  const Formula svd_literal = area_property(D, "L"), polar_literal = area_property(S, "L");
+  plan.formulations.push_back(
+      {"Def 2.2.1 as written (level L) for det A_s(t) = det((1-t)I + tD) and det A_p(t) = det((1-t)I + tS): "
+       "positive for every t in [0, 1] and monotone for all 0 <= s <= t <= 1 (the rotations have det c^2 + s^2 = "
+       "1, Lemma L5, and A = (R_alpha R_beta) S, L11: identities). No other lemma",
+       {sentence("svd-good-polar-not.L",
+                 "x, y, beta where the SVD interpolation is good for area and the polar one not", variables,
+                 domain && svd_literal && !polar_literal),
+        sentence("polar-good-svd-not.L",
+                 "x, y, beta where the polar interpolation is good for area and the SVD one not", variables,
+                 domain && !svd_literal && polar_literal)}});
   plan.sentences.push_back(
       sentence("trace-det-differ", "x, y, beta where tr S != tr D or det S != det D", variables,
                domain && (logic::not_equal(trace(S), trace(D)) || logic::not_equal(det(S), det(D)))));

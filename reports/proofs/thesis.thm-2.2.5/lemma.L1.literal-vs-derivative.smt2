@@ -1,0 +1,12 @@
+; thesis.thm-2.2.5 lemma.L1.literal-vs-derivative
+(set-logic NRA)
+(declare-const c1 Real)
+(declare-const c2 Real)
+(declare-const t Real)
+(declare-const t1 Real)
+(declare-const ts2 Real)
+(declare-const tt2 Real)
+(declare-const ts3 Real)
+(declare-const tt3 Real)
+(assert (forall ((ts Real) (tt Real) (ts1 Real) (tt1 Real) (t2 Real) (t3 Real)) (or (and (or (< ts 0) (> (+ ts (* (- 1) tt)) 0) (> (+ (- 1) tt) 0) (<= (+ (* c1 ts) (* (- 1) c1 tt) (* c2 ts ts) (* (- 1) c2 tt tt)) 0) (< ts1 0) (> (+ ts1 (* (- 1) tt1)) 0) (> (+ (- 1) tt1) 0) (>= (+ (* c1 ts1) (* (- 1) c1 tt1) (* c2 ts1 ts1) (* (- 1) c2 tt1 tt1)) 0)) (>= t 0) (<= (+ (- 1) t) 0) (< (+ c1 (* 2 c2 t)) 0) (>= t1 0) (<= (+ (- 1) t1) 0) (> (+ c1 (* 2 c2 t1)) 0)) (and (>= ts2 0) (<= (+ ts2 (* (- 1) tt2)) 0) (<= (+ (- 1) tt2) 0) (> (+ (* c1 ts2) (* (- 1) c1 tt2) (* c2 ts2 ts2) (* (- 1) c2 tt2 tt2)) 0) (>= ts3 0) (<= (+ ts3 (* (- 1) tt3)) 0) (<= (+ (- 1) tt3) 0) (< (+ (* c1 ts3) (* (- 1) c1 tt3) (* c2 ts3 ts3) (* (- 1) c2 tt3 tt3)) 0) (or (< t2 0) (> (+ (- 1) t2) 0) (>= (+ c1 (* 2 c2 t2)) 0) (< t3 0) (> (+ (- 1) t3) 0) (<= (+ c1 (* 2 c2 t3)) 0))))))
+(check-sat)

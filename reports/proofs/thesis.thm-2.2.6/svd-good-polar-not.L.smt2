@@ -1,0 +1,13 @@
+; thesis.thm-2.2.6 svd-good-polar-not.L
+(set-logic NRA)
+(declare-const x Real)
+(declare-const y Real)
+(declare-const c Real)
+(declare-const s Real)
+(declare-const t1 Real)
+(declare-const ts2 Real)
+(declare-const tt2 Real)
+(declare-const ts3 Real)
+(declare-const tt3 Real)
+(assert (forall ((t Real) (ts Real) (tt Real) (ts1 Real) (tt1 Real)) (and (> x 0) (> y 0) (= (+ (- 1) (* c c) (* s s)) 0) (or (< t 0) (> (+ (- 1) t) 0) (> (+ 1 (* (- 2) t) (* t x) (* t y) (* t t) (* (- 1) t t x) (* t t x y) (* (- 1) t t y)) 0)) (or (< ts 0) (> (+ ts (* (- 1) tt)) 0) (> (+ (- 1) tt) 0) (<= (+ (* (- 2) ts) (* ts x) (* ts y) (* ts ts) (* (- 1) ts ts x) (* ts ts x y) (* (- 1) ts ts y) (* 2 tt) (* (- 1) tt x) (* (- 1) tt y) (* (- 1) tt tt) (* tt tt x) (* (- 1) tt tt x y) (* tt tt y)) 0) (< ts1 0) (> (+ ts1 (* (- 1) tt1)) 0) (> (+ (- 1) tt1) 0) (>= (+ (* (- 2) ts1) (* ts1 x) (* ts1 y) (* ts1 ts1) (* (- 1) ts1 ts1 x) (* ts1 ts1 x y) (* (- 1) ts1 ts1 y) (* 2 tt1) (* (- 1) tt1 x) (* (- 1) tt1 y) (* (- 1) tt1 tt1) (* tt1 tt1 x) (* (- 1) tt1 tt1 x y) (* tt1 tt1 y)) 0)) (or (and (>= t1 0) (<= (+ (- 1) t1) 0) (<= (+ 1 (* 2 c c s s t1 t1 x y) (* c c t1 x) (* c c t1 y) (* (- 1) c c t1 t1 x) (* (- 1) c c t1 t1 y) (* c c c c t1 t1 x y) (* s s t1 x) (* s s t1 y) (* (- 1) s s t1 t1 x) (* (- 1) s s t1 t1 y) (* s s s s t1 t1 x y) (* (- 2) t1) (* t1 t1)) 0)) (and (>= ts2 0) (<= (+ ts2 (* (- 1) tt2)) 0) (<= (+ (- 1) tt2) 0) (> (+ (* 2 c c s s ts2 ts2 x y) (* (- 2) c c s s tt2 tt2 x y) (* c c ts2 x) (* c c ts2 y) (* (- 1) c c ts2 ts2 x) (* (- 1) c c ts2 ts2 y) (* (- 1) c c tt2 x) (* (- 1) c c tt2 y) (* c c tt2 tt2 x) (* c c tt2 tt2 y) (* c c c c ts2 ts2 x y) (* (- 1) c c c c tt2 tt2 x y) (* s s ts2 x) (* s s ts2 y) (* (- 1) s s ts2 ts2 x) (* (- 1) s s ts2 ts2 y) (* (- 1) s s tt2 x) (* (- 1) s s tt2 y) (* s s tt2 tt2 x) (* s s tt2 tt2 y) (* s s s s ts2 ts2 x y) (* (- 1) s s s s tt2 tt2 x y) (* (- 2) ts2) (* ts2 ts2) (* 2 tt2) (* (- 1) tt2 tt2)) 0) (>= ts3 0) (<= (+ ts3 (* (- 1) tt3)) 0) (<= (+ (- 1) tt3) 0) (< (+ (* 2 c c s s ts3 ts3 x y) (* (- 2) c c s s tt3 tt3 x y) (* c c ts3 x) (* c c ts3 y) (* (- 1) c c ts3 ts3 x) (* (- 1) c c ts3 ts3 y) (* (- 1) c c tt3 x) (* (- 1) c c tt3 y) (* c c tt3 tt3 x) (* c c tt3 tt3 y) (* c c c c ts3 ts3 x y) (* (- 1) c c c c tt3 tt3 x y) (* s s ts3 x) (* s s ts3 y) (* (- 1) s s ts3 ts3 x) (* (- 1) s s ts3 ts3 y) (* (- 1) s s tt3 x) (* (- 1) s s tt3 y) (* s s tt3 tt3 x) (* s s tt3 tt3 y) (* s s s s ts3 ts3 x y) (* (- 1) s s s s tt3 tt3 x y) (* (- 2) ts3) (* ts3 ts3) (* 2 tt3) (* (- 1) tt3 tt3)) 0))))))
+(check-sat)
