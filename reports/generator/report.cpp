@@ -119,9 +119,11 @@ bool write_sentences(std::ostringstream& md, const json& proof) {
   return any_structural;
 }
 
-/// What was tried and not answered (issue 17): formulation, tool, CPU time, peak memory, outcome.
+/// What was tried for the record (issue 17): the attempted formulations' runs, answered or not, and the
+/// formulations' unanswered runs: formulation, tool, CPU time, peak memory, outcome.
 void write_attempts(std::ostringstream& md, const json& attempts) {
-  md << "**Tried, not answered** (kept for the record; the label rests on the formulations above):\n\n"
+  md << "**Tried for the record** (attempted formulations, each run with its outcome, and the runs that answered "
+        "nothing; the label rests on the formulations above):\n\n"
         "| formulation | sentence | tool | CPU time | peak memory | outcome |\n|---|---|---|---|---|---|\n";
   for (const auto& a : attempts) {
     std::ostringstream cpu, memory;
@@ -474,7 +476,7 @@ std::string render_markdown(const json& doc) {
         "as nearly as written from the paper's definition (Def 2.2.1: for all 0 <= s <= t <= 1; Def 2.2.2: for "
         "every t in [0, 1] and every unit v) with as few lemmas as a decider answers, each lemma it uses a "
         "sentence of its own. What was tried and not answered (tool, CPU time, memory, outcome), and what no "
-        "decider can be given (a transcendental homotopy), is listed under \"Tried, not answered\".\n"
+        "decider can be given (a transcendental homotopy), is listed under \"Tried for the record\".\n"
         "- **proved, one decider (name)**: as above, but some sentence was answered by the named decider only.\n"
         "- **proved, citing (theorem)**: as above, with an external published theorem as a step (full reference "
         "given), and no formulation without it answered by two deciders.\n"
