@@ -416,8 +416,9 @@ void write_engine_cli(std::ostringstream& md, const json& cli) {
   md << "`build/bin/bench_cli_scale`: `affinterp interpolate --format npy --no-figures --metrics none` on "
         "`affinterp shapes strip-spiral --quads 2000x250` ("
      << fixed(cli.value("triangles", json()), 0)
-     << " triangles, a strip 18.8 × 2 rolled 1.5 turns), run as a process for 2 and for 10 frames: a frame through "
-        "the CLI, writing included, is the difference over the 8 extra frames; the engine's frame is "
+     << " triangles, a strip 18.8 × 2 rolled 1.5 turns), run as a process for 2 frames and for 32 (E^F) or 8 (E^R) "
+        "more: a "
+        "frame through the CLI, writing included, is the difference over the extra frames; the engine's frame is "
         "`vertices_at(times)` of 8 frames on the same pair, per frame; the median of three runs. Machine: "
      << cell(cli.value("machine", "?")) << ". Target: the CLI within " << fixed(cli.value("target_ratio", json()), 1)
      << "× the engine: "
