@@ -239,6 +239,19 @@ std::string fixed(const json& value, int digits) {
   return out.str();
 }
 
+/// A figure with its 95% interval in brackets, when it has one.
+std::string with_ci(const json& value, const json& ci, int digits) {
+  return fixed(value, digits) +
+         (ci.is_array() ? " (" + fixed(ci[0], digits) + "–" + fixed(ci[1], digits) + ")" : std::string());
+}
+
+/// A speed verdict as a table cell: met (reproduced), **no** (not-reproduced), undecided, or — when none.
+std::string met_cell(const json& verdict) {
+  if (!verdict.is_string()) return "—";
+  const std::string v = verdict.get<std::string>();
+  return v == "reproduced" ? "yes" : v == "not-reproduced" ? "**no**" : "undecided";
+}
+
 /// The global engine's speed against its targets (bench_interp, one run on one machine).
 void write_engine_speed(std::ostringstream& md, const json& speed) {
   md << "## Global engine speed\n\n";
@@ -261,39 +274,22 @@ void write_engine_speed(std::ostringstream& md, const json& speed) {
         "untimed), as common public implementations do.\n\n"
      << "| energy | set-up (ms) | per frame (ms) | frames/s (95% CI) | target frames/s | baseline per frame (ms) | "
         "× baseline | targets met |\n|---|---|---|---|---|---|---|---|\n";
-  for (const auto& row : speed["rows"]) {
-    const std::string verdict = row.value("verdict", "inconclusive");
-    const json& ci = row.value("frames_per_s_ci95", json());
+  for (const auto& row : speed["rows"])
     md << "| " << row.value("energy", "") << " | " << fixed(row["setup_ms"], 1) << " | " << fixed(row["frame_ms"], 2)
-       << " | " << fixed(row["frames_per_s"], 1)
-       << (ci.is_array() ? " (" + fixed(ci[0], 1) + "–" + fixed(ci[1], 1) + ")" : std::string()) << " | "
+       << " | " << with_ci(row["frames_per_s"], row.value("frames_per_s_ci95", json()), 1) << " | "
        << fixed(row["target_frames_per_s"], 0) << " | " << fixed(row["baseline_ms"], 1) << " | "
-       << fixed(row["speedup_vs_baseline"], 1) << " | "
-       << (verdict == "reproduced"       ? "yes"
-           : verdict == "not-reproduced" ? "**no**"
-                                         : "undecided")
-       << " |\n";
-  }
+       << fixed(row["speedup_vs_baseline"], 1) << " | " << met_cell(row.value("verdict", "inconclusive")) << " |\n";
   md << "\nIssue 19 raises the targets to E^F ≥ 300 and E^R ≥ 60 frames/s, one frame at a time or in batches of 8 "
         "frames solved in parallel on the machine's cores (`batch_frames`, the same interval rule):\n\n"
         "| energy | target frames/s | one at a time (95% CI) | met | batched (95% CI) | met |\n"
         "|---|---|---|---|---|---|\n";
-  const auto met = [](const json& verdict) {
-    return !verdict.is_string()                             ? std::string("—")
-           : verdict.get<std::string>() == "reproduced"     ? std::string("yes")
-           : verdict.get<std::string>() == "not-reproduced" ? std::string("**no**")
-                                                            : std::string("undecided");
-  };
   for (const auto& row : speed["rows"]) {
     if (!row.value("raised_target_frames_per_s", json()).is_number()) continue;
-    const auto with_ci = [](const json& value, const json& ci) {
-      return fixed(value, 1) + (ci.is_array() ? " (" + fixed(ci[0], 1) + "–" + fixed(ci[1], 1) + ")" : std::string());
-    };
     md << "| " << row.value("energy", "") << " | " << fixed(row["raised_target_frames_per_s"], 0) << " | "
-       << with_ci(row["frames_per_s"], row.value("frames_per_s_ci95", json())) << " | "
-       << met(row.value("raised_verdict", json())) << " | "
-       << with_ci(row.value("batched_frames_per_s", json()), row.value("batched_frames_per_s_ci95", json())) << " | "
-       << met(row.value("raised_verdict_batched", json())) << " |\n";
+       << with_ci(row["frames_per_s"], row.value("frames_per_s_ci95", json()), 1) << " | "
+       << met_cell(row.value("raised_verdict", json())) << " | "
+       << with_ci(row.value("batched_frames_per_s", json()), row.value("batched_frames_per_s_ci95", json()), 1) << " | "
+       << met_cell(row.value("raised_verdict_batched", json())) << " |\n";
   }
   md << "\n";
   const json history = speed.value("history", json());
@@ -301,9 +297,6 @@ void write_engine_speed(std::ostringstream& md, const json& speed) {
   md << "On every recorded run (`bench/history/`; " << cell(history.value("rule", "")) << "):\n\n"
      << "| run | CPU | cores | energy | frames/s (95% CI) | set-up ms (95% CI) | processes | targets met |\n"
         "|---|---|---|---|---|---|---|---|\n";
-  const auto with_ci = [](const json& value, const json& ci, int digits) {
-    return fixed(value, digits) + (ci.is_array() ? " (" + fixed(ci[0], digits) + "–" + fixed(ci[1], digits) + ")" : "");
-  };
   for (const auto& row : history["rows"])
     md << "| " << row.value("run", "") << (row.value("recorded", true) ? "" : " (not recorded yet)") << " | "
        << cell(row["cpu"].is_string() ? row["cpu"].get<std::string>() : "?") << " | " << row["cores"].dump() << " | "
