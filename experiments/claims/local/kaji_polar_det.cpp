@@ -79,6 +79,30 @@ ProofPlan proof_plan() {
                 spd && eigenvalues &&
                     logic::not_equal(det_of_blend(S, "t"), ((l1 - one) * t + one) * ((l2 - one) * t + one)))},
       {{"det R_theta = c^2 + s^2", det(R) - (c * c + s * s)}}};
+  // Issue 17: straight from the definitions, no identity: A = RS and R_{tθ} any rotations (a point on the unit
+  // circle each), the singular values of A the l1, l2 >= 0 whose squares are the eigenvalues of AᵀA (Viète).
+  // Tried for the record: with 10 variables no decider answers factorisation-fails within 300 s.
+  const Polynomial ct = var("ct"), st = var("st");
+  const PolyMat2 AtA = product(transpose(RS), RS);
+  const Formula rotations = logic::equal(c * c + s * s, 1) && logic::equal(ct * ct + st * st, 1);
+  const Formula singular_values = logic::greater_equal(l1, 0) && logic::greater_equal(l2, 0) &&
+                                  logic::equal(l1 * l1 + l2 * l2, trace(AtA)) &&
+                                  logic::equal(l1 * l1 * l2 * l2, det(AtA));
+  plan.attempts.push_back(
+      {"straight from the definitions: det A^P(t) = det(R_{t theta}((1-t)I + tS)) with R_{t theta} any rotation "
+       "[[ct, -st], [st, ct]], ct^2 + st^2 = 1, and A = RS, R = [[c, -s], [s, c]], c^2 + s^2 = 1; the singular "
+       "values of A as the l1, l2 >= 0 whose squares are the eigenvalues of A^T A (l1^2 + l2^2 = tr A^T A, "
+       "l1^2 l2^2 = det A^T A: Viete, L13). No identity",
+       {sentence("literal.singular-values-exist",
+                 "S positive definite and a rotation R where RS has no singular values", {"x", "y", "h", "c", "s"},
+                 spd && logic::equal(c * c + s * s, 1) && !logic::exists({"l1", "l2"}, singular_values)),
+        sentence("literal.factorisation-fails",
+                 "S positive definite, rotations R, R_{t theta}, the singular values l1, l2 of RS and a real t where "
+                 "det(R_{t theta}((1-t)I + tS)) != ((l1-1)t+1)((l2-1)t+1)",
+                 {"x", "y", "h", "c", "s", "ct", "st", "l1", "l2", "t"},
+                 spd && rotations && singular_values &&
+                     logic::not_equal(det(product(rotation(ct, st), proofs::blend(S, t))),
+                                      ((l1 - one) * t + one) * ((l2 - one) * t + one)))}});
   for (int i = 0; i < 2; ++i)
     for (int j = 0; j < 2; ++j)
       plan.identities.push_back({"(RS)^T(RS) = (c^2 + s^2) S^2, entry " + std::to_string(i + 1) + std::to_string(j + 1),

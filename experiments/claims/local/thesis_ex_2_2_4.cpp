@@ -129,6 +129,22 @@ ProofPlan proof_plan() {
                 logic::not_equal(var("beta"), 0) && svd_norm_property(Polynomial(2), Polynomial(1), var("beta")))},
       {}};
   plan.sentences.push_back(in_sqrt3("svd-not-good-area.L", "the same at level L", !area_property(D, "L")));
+  // Issue 17: the thesis's statements straight from Defs 2.2.1 and 2.2.2 (level L, unit v); Lemma L4 decided.
+  plan.formulations.push_back(
+      {"Defs 2.2.1 and 2.2.2 as written (level L) for every statement of the thesis: det A(t) > 0 for every t in "
+       "[0, 1] and monotone for all 0 <= s <= t <= 1; ||A(t)v|| monotone for all 0 <= s <= t <= 1 and every unit v, "
+       "through its square (Lemma L4, a sentence); the rotations have det 1 and are orthogonal (Lemma L5, "
+       "identities). No other lemma",
+       {lemma_L4(), plan.sentences.front(),
+        in_sqrt3("linear-good-area.L", "the linear interpolation of A is good for area (level L)",
+                 area_property(A, "L")),
+        in_sqrt3("linear-good-norm.L", "the linear interpolation of A is good for norm (level L)",
+                 norm_property(A, "L")),
+        plan.sentences.back(),
+        in_sqrt3("polar-not-good-area.L", "the polar interpolation (S) is not good for area (level L)",
+                 !area_property(S, "L")),
+        in_sqrt3("polar-not-good-norm.L", "the polar interpolation (S) is not good for norm (level L)",
+                 !norm_property(S, "L"))}});
   // Issue 17: Def 2.2.2 for the SVD homotopy as written is no sentence for a decider.
   plan.attempts.push_back(
       {.formulation = "beyond the thesis, svd-good-norm-some-beta as written (Def 2.2.2 for R_{t alpha}((1-t)I + "

@@ -1,0 +1,10 @@
+; thesis.ex-2.2.4 polar-not-good-area.L
+(set-logic QF_NRA)
+(declare-const r3 Real)
+(declare-const t Real)
+(declare-const ts Real)
+(declare-const tt Real)
+(declare-const ts1 Real)
+(declare-const tt1 Real)
+(assert (and (= (+ (- 3) (* r3 r3)) 0) (> r3 0) (or (and (>= t 0) (<= (+ (- 1) t) 0) (<= (+ 1 (* (- (/ 1 16)) r3 r3 t t) t (* (/ 3 16) t t)) 0)) (and (>= ts 0) (<= (+ ts (* (- 1) tt)) 0) (<= (+ (- 1) tt) 0) (> (+ (* (- (/ 1 16)) r3 r3 ts ts) (* (/ 1 16) r3 r3 tt tt) ts (* (/ 3 16) ts ts) (* (- 1) tt) (* (- (/ 3 16)) tt tt)) 0) (>= ts1 0) (<= (+ ts1 (* (- 1) tt1)) 0) (<= (+ (- 1) tt1) 0) (< (+ (* (- (/ 1 16)) r3 r3 ts1 ts1) (* (/ 1 16) r3 r3 tt1 tt1) ts1 (* (/ 3 16) ts1 ts1) (* (- 1) tt1) (* (- (/ 3 16)) tt1 tt1)) 0)))))
+(check-sat)

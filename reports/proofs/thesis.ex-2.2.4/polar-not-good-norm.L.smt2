@@ -1,0 +1,11 @@
+; thesis.ex-2.2.4 polar-not-good-norm.L
+(set-logic QF_NRA)
+(declare-const r3 Real)
+(declare-const v1 Real)
+(declare-const v2 Real)
+(declare-const ts Real)
+(declare-const tt Real)
+(declare-const ts1 Real)
+(declare-const tt1 Real)
+(assert (and (= (+ (- 3) (* r3 r3)) 0) (> r3 0) (= (+ (- 1) (* v1 v1) (* v2 v2)) 0) (>= ts 0) (<= (+ ts (* (- 1) tt)) 0) (<= (+ (- 1) tt) 0) (> (+ (* (- 1) r3 ts v1 v2) (* (- (/ 1 2)) r3 ts ts v1 v2) (* r3 tt v1 v2) (* (/ 1 2) r3 tt tt v1 v2) (* (/ 1 16) r3 r3 ts ts v1 v1) (* (/ 1 16) r3 r3 ts ts v2 v2) (* (- (/ 1 16)) r3 r3 tt tt v1 v1) (* (- (/ 1 16)) r3 r3 tt tt v2 v2) (* (/ 1 2) ts v1 v1) (* (/ 3 2) ts v2 v2) (* (/ 1 16) ts ts v1 v1) (* (/ 9 16) ts ts v2 v2) (* (- (/ 1 2)) tt v1 v1) (* (- (/ 3 2)) tt v2 v2) (* (- (/ 1 16)) tt tt v1 v1) (* (- (/ 9 16)) tt tt v2 v2)) 0) (>= ts1 0) (<= (+ ts1 (* (- 1) tt1)) 0) (<= (+ (- 1) tt1) 0) (< (+ (* (- 1) r3 ts1 v1 v2) (* (- (/ 1 2)) r3 ts1 ts1 v1 v2) (* r3 tt1 v1 v2) (* (/ 1 2) r3 tt1 tt1 v1 v2) (* (/ 1 16) r3 r3 ts1 ts1 v1 v1) (* (/ 1 16) r3 r3 ts1 ts1 v2 v2) (* (- (/ 1 16)) r3 r3 tt1 tt1 v1 v1) (* (- (/ 1 16)) r3 r3 tt1 tt1 v2 v2) (* (/ 1 2) ts1 v1 v1) (* (/ 3 2) ts1 v2 v2) (* (/ 1 16) ts1 ts1 v1 v1) (* (/ 9 16) ts1 ts1 v2 v2) (* (- (/ 1 2)) tt1 v1 v1) (* (- (/ 3 2)) tt1 v2 v2) (* (- (/ 1 16)) tt1 tt1 v1 v1) (* (- (/ 9 16)) tt1 tt1 v2 v2)) 0)))
+(check-sat)
