@@ -1,6 +1,8 @@
 // A frame through the CLI against the engine's at 1M triangles: read from a Google Benchmark JSON like
-// bench_cli_scale's, judged against issue 19's 1.3 times, and rendered into the report.
+// bench_cli_scale's, judged against issue 19's 1.3 times on the ratio's bootstrap interval, and rendered into the
+// report.
 #include "experiments/claims/engine_cli.hpp"
+#include "checks/claims/bench_json.hpp"
 #include "reports/generator/report.hpp"
 
 #include <gtest/gtest.h>
@@ -14,40 +16,49 @@ namespace {
 
 namespace fs = std::filesystem;
 
-nlohmann::json median(const std::string& name, double ms) {
-  const std::string run_name = name + "/1000000/iterations:1/repeats:3/manual_time";
-  return {{"name", run_name + "_median"},
-          {"run_name", run_name},
-          {"run_type", "aggregate"},
-          {"aggregate_name", "median"},
-          {"real_time", ms},
-          {"time_unit", "ms"},
-          {"triangles", 1e6}};
-}
-
-TEST(EngineCli, JudgesEachEnergysCliFrameAgainstTheEngines) {
+nlohmann::json judged(const nlohmann::json& benchmarks) {
   const fs::path file = fs::temp_directory_path() / "affinterp_engine_cli_test.json";
-  std::ofstream(file) << nlohmann::json{
-      {"context", {{"affinterp_cpu", "test cpu"}}},
-      {"benchmarks",
-       {median("cli_frame/F", 120), median("engine_frame/F", 100), median("cli_frame/R", 800),
-        median("engine_frame/R",
-               600)}}}.dump();
+  std::ofstream(file)
+      << nlohmann::json{{"context", {{"affinterp_cpu", "test cpu"}}}, {"benchmarks", benchmarks}}.dump();
   const nlohmann::json table = engine_cli(file);
   fs::remove(file);
-  ASSERT_EQ(table["rows"].size(), 2u);
+  return table;
+}
+
+TEST(EngineCli, JudgesEachEnergysCliFrameAgainstTheEnginesOnTheRatiosInterval) {
+  // E^F 1.2 times the engine (1.05 into memory), E^R 1.33 times (both within 1%); E^S 1.3 times with a 20% spread:
+  // undecided.
+  const nlohmann::json table =
+      judged(concatenated({repeated("cli_frame/F/1000000", 120, 1e6), repeated("cli_frame_memory/F/1000000", 105, 1e6),
+                           repeated("engine_frame/F/1000000", 100, 1e6), repeated("cli_frame/R/1000000", 800, 1e6),
+                           repeated("engine_frame/R/1000000", 600, 1e6), repeated("cli_frame/S/1000000", 130, 1e6, 0.2),
+                           repeated("engine_frame/S/1000000", 100, 1e6, 0.2)}));
+  ASSERT_EQ(table["rows"].size(), 3u);
   EXPECT_EQ(table["triangles"], 1e6);
   EXPECT_EQ(table["machine"], "test cpu");
-  EXPECT_EQ(table["rows"][0]["energy"], "F");
-  EXPECT_DOUBLE_EQ(table["rows"][0]["ratio"].get<double>(), 1.2);
-  EXPECT_EQ(table["rows"][0]["met"], true);
-  EXPECT_EQ(table["rows"][1]["met"], false) << "800 / 600 > 1.3";
-  EXPECT_EQ(table["met"], false);
-  EXPECT_TRUE(engine_cli(file).is_null()) << "not measured";
+  const auto& F = table["rows"][0];
+  EXPECT_EQ(F["energy"], "F");
+  EXPECT_DOUBLE_EQ(F["ratio"].get<double>(), 1.2);
+  EXPECT_EQ(F["repetitions"], 10);
+  ASSERT_TRUE(F["ratio_ci95"].is_array());
+  EXPECT_LT(F["ratio_ci95"][1].get<double>(), 1.3);
+  EXPECT_EQ(F["verdict"], "reproduced");
+  EXPECT_DOUBLE_EQ(F["memory_ratio"].get<double>(), 1.05) << "the same CLI runs writing into memory";
+  EXPECT_FALSE(table["rows"][1].contains("memory_ratio")) << "E^R was not run into memory";
+  EXPECT_EQ(table["rows"][1]["verdict"], "not-reproduced") << "800 / 600 > 1.3";
+  EXPECT_EQ(table["rows"][2]["verdict"], "inconclusive") << "1.3 with a 20% spread straddles the target";
+  EXPECT_EQ(table["verdict"], "not-reproduced");
 
   const std::string md = report::render_markdown(
       {{"claims", nlohmann::json::array()}, {"environment", nlohmann::json::object()}, {"engine_cli", table}});
-  EXPECT_NE(md.find("| E^R | 800.0 | 600.0 | 1.33 | **no** |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| E^R | 800.0 | 600.0 | 1.33 ("), std::string::npos) << md;
+  EXPECT_NE(md.find("| 10 | **no** | — | — |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 10 | yes | 105.0 | 1.05 ("), std::string::npos) << md;
+  EXPECT_NE(md.find("| 10 | undecided |"), std::string::npos) << md;
+}
+
+TEST(EngineCli, IsNotMeasuredWithoutItsFile) {
+  EXPECT_TRUE(engine_cli(fs::temp_directory_path() / "affinterp_engine_cli_test_absent.json").is_null());
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // The global engine's speed table: read from a Google Benchmark JSON like bench_interp's, judged against
 // the targets, and rendered into the report.
 #include "experiments/claims/engine_speed.hpp"
+#include "checks/claims/bench_json.hpp"
 #include "reports/generator/report.hpp"
 
 #include <gtest/gtest.h>
@@ -12,35 +13,6 @@ namespace affinterp::claims {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// Ten repetitions spread evenly over ms · (1 ± spread), then their median aggregate, as bench_interp writes
-/// them.
-nlohmann::json repeated(const std::string& name, double ms, double triangles = 0, double spread = 0.01) {
-  nlohmann::json runs = nlohmann::json::array();
-  const std::string run_name = name + "/min_time:1.000/repeats:10";
-  for (int i = 0; i < 10; ++i)
-    runs.push_back({{"name", run_name},
-                    {"run_name", run_name},
-                    {"run_type", "iteration"},
-                    {"repetition_index", i},
-                    {"real_time", ms * (1 + spread * (2.0 * i / 9 - 1))},
-                    {"time_unit", "ms"}});
-  runs.push_back({{"name", run_name + "_median"},
-                  {"run_name", run_name},
-                  {"run_type", "aggregate"},
-                  {"aggregate_name", "median"},
-                  {"real_time", ms},
-                  {"time_unit", "ms"}});
-  if (triangles > 0)
-    for (auto& run : runs) run["triangles"] = triangles;
-  return runs;
-}
-
-nlohmann::json concatenated(std::initializer_list<nlohmann::json> parts) {
-  nlohmann::json all = nlohmann::json::array();
-  for (const auto& part : parts) all.insert(all.end(), part.begin(), part.end());
-  return all;
-}
 
 fs::path write_bench(const nlohmann::json& benchmarks) {
   const fs::path file = fs::temp_directory_path() / "affinterp_engine_speed_test.json";

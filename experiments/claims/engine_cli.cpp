@@ -1,15 +1,22 @@
 #include "experiments/claims/engine_cli.hpp"
 
 #include "experiments/bench/bench_results.hpp"
+#include "experiments/claims/speed_verdict.hpp"
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace affinterp::claims {
 namespace {
 
 /// Issue 19: a frame through the CLI, writing included, within 1.3 times the engine's.
 constexpr double target_ratio = 1.3;
+
+nlohmann::json interval(const Measured& m) {
+  return m.ci95 ? nlohmann::json{m.ci95->lo, m.ci95->hi} : nlohmann::json();
+}
 
 }  // namespace
 
@@ -20,24 +27,34 @@ nlohmann::json engine_cli(const std::filesystem::path& bench_file) {
   nlohmann::json table{{"file", bench_file.filename().string()},
                        {"machine", times->machine},
                        {"target_ratio", target_ratio},
-                       {"rows", nlohmann::json::array()},
-                       {"met", true}};
+                       {"rows", nlohmann::json::array()}};
+  std::vector<Verdict> verdicts;
   for (const auto& [name, cli_ms] : times->median) {
     if (!name.starts_with("cli_frame/")) continue;  // cli_frame/<energy>/<triangles>
-    const std::string rest = name.substr(10);
-    const std::optional<double> engine_ms = (*times)["engine_frame/" + rest];
+    const std::string rest = name.substr(10), engine = "engine_frame/" + rest;
+    const std::optional<double> engine_ms = (*times)[engine];
     if (!engine_ms) continue;
     if (const auto triangles = sizes ? (*sizes)[name] : std::nullopt) table["triangles"] = *triangles;
-    const double ratio = cli_ms / *engine_ms;
-    const bool met = ratio <= target_ratio;
-    table["rows"].push_back({{"energy", rest.substr(0, rest.find('/'))},
-                             {"cli_frame_ms", cli_ms},
-                             {"engine_frame_ms", *engine_ms},
-                             {"ratio", ratio},
-                             {"met", met}});
-    table["met"] = table["met"].get<bool>() && met;
+    const Measured ratio = measured_ratio(*times, name, engine);
+    const Verdict verdict = verdict_of(ratio, {0, target_ratio});
+    verdicts.push_back(verdict);
+    nlohmann::json row{{"energy", rest.substr(0, rest.find('/'))},
+                       {"cli_frame_ms", cli_ms},
+                       {"engine_frame_ms", *engine_ms},
+                       {"ratio", ratio.value},
+                       {"ratio_ci95", interval(ratio)},
+                       {"repetitions", ratio.repetitions},
+                       {"verdict", to_string(verdict)}};
+    const std::string memory = "cli_frame_memory/" + rest;  // the same CLI runs writing into memory
+    if (const std::optional<double> memory_ms = (*times)[memory]) {
+      const Measured memory_ratio = measured_ratio(*times, memory, engine);
+      row["cli_memory_frame_ms"] = *memory_ms;
+      row["memory_ratio"] = memory_ratio.value;
+      row["memory_ratio_ci95"] = interval(memory_ratio);
+    }
+    table["rows"].push_back(std::move(row));
   }
-  if (table["rows"].empty()) table["met"] = nullptr;
+  table["verdict"] = verdicts.empty() ? nlohmann::json() : nlohmann::json(to_string(all_of(verdicts)));
   return table;
 }
 

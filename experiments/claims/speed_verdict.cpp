@@ -25,7 +25,9 @@ Verdict verdict_of(const Measured& m, Interval band) {
   return Verdict::inconclusive;
 }
 
-Verdict all_of(std::initializer_list<Verdict> verdicts) {
+Verdict all_of(std::initializer_list<Verdict> verdicts) { return all_of(std::span(verdicts.begin(), verdicts.size())); }
+
+Verdict all_of(std::span<const Verdict> verdicts) {
   if (std::ranges::any_of(verdicts, [](Verdict v) { return v == Verdict::not_reproduced; }))
     return Verdict::not_reproduced;
   if (std::ranges::all_of(verdicts, [](Verdict v) { return v == Verdict::reproduced; })) return Verdict::reproduced;

@@ -26,6 +26,7 @@ Verdict verdict_of(const Measured& m, Interval band);
 /// The verdict of several figures read together: reproduced if all are, not-reproduced if any is, else
 /// inconclusive.
 Verdict all_of(std::initializer_list<Verdict> verdicts);
+Verdict all_of(std::span<const Verdict> verdicts);
 
 /// The rule across the recorded runs (reports/bench/history), as the report states it (kAcrossRunsRule): the
 /// verdict every run gives when they all give the same; machine-dependent when one run is reproduced and
