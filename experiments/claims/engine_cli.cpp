@@ -14,10 +14,6 @@ namespace {
 /// Issue 19: a frame through the CLI, writing included, within 1.3 times the engine's.
 constexpr double target_ratio = 1.3;
 
-nlohmann::json interval(const Measured& m) {
-  return m.ci95 ? nlohmann::json{m.ci95->lo, m.ci95->hi} : nlohmann::json();
-}
-
 }  // namespace
 
 nlohmann::json engine_cli(const std::filesystem::path& bench_file) {
@@ -36,21 +32,17 @@ nlohmann::json engine_cli(const std::filesystem::path& bench_file) {
     if (!engine_ms) continue;
     if (const auto triangles = sizes ? (*sizes)[name] : std::nullopt) table["triangles"] = *triangles;
     const Measured ratio = measured_ratio(*times, name, engine);
-    const Verdict verdict = verdict_of(ratio, {0, target_ratio});
-    verdicts.push_back(verdict);
-    nlohmann::json row{{"energy", rest.substr(0, rest.find('/'))},
-                       {"cli_frame_ms", cli_ms},
-                       {"engine_frame_ms", *engine_ms},
-                       {"ratio", ratio.value},
-                       {"ratio_ci95", interval(ratio)},
-                       {"repetitions", ratio.repetitions},
-                       {"verdict", to_string(verdict)}};
+    verdicts.push_back(verdict_of(ratio, {0, target_ratio}));
+    nlohmann::json row = to_json(ratio, {0, target_ratio});  // ratio, its interval, repetitions, verdict
+    row["energy"] = rest.substr(0, rest.find('/'));
+    row["cli_frame_ms"] = cli_ms;
+    row["engine_frame_ms"] = *engine_ms;
     const std::string memory = "cli_frame_memory/" + rest;  // the same CLI runs writing into memory
     if (const std::optional<double> memory_ms = (*times)[memory]) {
       const Measured memory_ratio = measured_ratio(*times, memory, engine);
       row["cli_memory_frame_ms"] = *memory_ms;
       row["memory_ratio"] = memory_ratio.value;
-      row["memory_ratio_ci95"] = interval(memory_ratio);
+      row["memory_ratio_ci95"] = ci95_json(memory_ratio);
     }
     table["rows"].push_back(std::move(row));
   }

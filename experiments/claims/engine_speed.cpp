@@ -19,10 +19,6 @@ std::optional<double> frames_per_second_target(const std::string& energy) {
 
 nlohmann::json optional_number(const std::optional<double>& x) { return x ? nlohmann::json(*x) : nlohmann::json(); }
 
-nlohmann::json interval(const Measured& m) {
-  return m.ci95 ? nlohmann::json{m.ci95->lo, m.ci95->hi} : nlohmann::json();
-}
-
 /// Issue 19's raised targets on the octopus: E^F ≥ 300, E^R ≥ 60 frames/s, one frame at a time or batched.
 std::optional<double> raised_frames_per_second_target(const std::string& energy) {
   if (energy == "F") return 300.0;
@@ -65,7 +61,7 @@ nlohmann::json engine_speed(const std::filesystem::path& bench_file) {
     std::optional<Measured> setup;
     if (setup_ms) setup = measured_median(*times, "setup/" + rest, identity);
     const Verdict verdict = targets_verdict(setup, frames_per_s, energy);
-    const nlohmann::json setup_ci = setup ? interval(*setup) : nlohmann::json();
+    const nlohmann::json setup_ci = setup ? ci95_json(*setup) : nlohmann::json();
     std::optional<Measured> batched;
     if ((*times)["batch_frames/" + rest]) batched = measured_median(*times, "batch_frames/" + rest, batch_per_second);
     const std::optional<double> raised = raised_frames_per_second_target(energy);
@@ -81,7 +77,7 @@ nlohmann::json engine_speed(const std::filesystem::path& bench_file) {
         {"setup_target_ms", setup_target_ms},
         {"frame_ms", frame_ms},
         {"frames_per_s", frames_per_s.value},
-        {"frames_per_s_ci95", interval(frames_per_s)},
+        {"frames_per_s_ci95", ci95_json(frames_per_s)},
         {"target_frames_per_s", optional_number(target)},
         {"repetitions", frames_per_s.repetitions},
         {"processes", frames_per_s.processes},
@@ -89,7 +85,7 @@ nlohmann::json engine_speed(const std::filesystem::path& bench_file) {
         {"speedup_vs_baseline", baseline_ms ? nlohmann::json(*baseline_ms / frame_ms) : nlohmann::json()},
         {"verdict", to_string(verdict)},
         {"batched_frames_per_s", batched ? nlohmann::json(batched->value) : nlohmann::json()},
-        {"batched_frames_per_s_ci95", batched ? interval(*batched) : nlohmann::json()},
+        {"batched_frames_per_s_ci95", batched ? ci95_json(*batched) : nlohmann::json()},
         {"raised_target_frames_per_s", optional_number(raised)},
         {"raised_verdict", raised_verdict(frames_per_s)},
         {"raised_verdict_batched", raised_verdict(batched)},
@@ -118,10 +114,10 @@ nlohmann::json engine_speed_by_run(const std::vector<bench::RecordedRun>& runs) 
                       {"energy", energy},
                       {"mesh", rest.substr(rest.find('/') + 1)},
                       {"frames_per_s", figure.measured.value},
-                      {"frames_per_s_ci95", interval(figure.measured)},
+                      {"frames_per_s_ci95", ci95_json(figure.measured)},
                       {"target_frames_per_s", optional_number(frames_per_second_target(energy))},
                       {"setup_ms", setup ? nlohmann::json(setup->value) : nlohmann::json()},
-                      {"setup_ms_ci95", setup ? interval(*setup) : nlohmann::json()},
+                      {"setup_ms_ci95", setup ? ci95_json(*setup) : nlohmann::json()},
                       {"processes", figure.measured.processes},
                       {"verdict", to_string(verdict)}});
     }

@@ -41,11 +41,15 @@ Verdict across_runs(std::span<const Verdict> runs) {
   return Verdict::inconclusive;
 }
 
+nlohmann::json ci95_json(const Measured& m) {
+  return m.ci95 ? nlohmann::json{m.ci95->lo, m.ci95->hi} : nlohmann::json();
+}
+
 nlohmann::json to_json(const Measured& m, Interval band, std::string_view name) {
   const std::string key(name);
   return {
       {key, m.value},
-      {key + "_ci95", m.ci95 ? nlohmann::json{m.ci95->lo, m.ci95->hi} : nlohmann::json()},
+      {key + "_ci95", ci95_json(m)},
       {"band", {bound(band.lo), bound(band.hi)}},
       {"repetitions", m.repetitions},
       {"processes", m.processes},

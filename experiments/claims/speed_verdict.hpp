@@ -39,6 +39,9 @@ inline constexpr std::string_view kAcrossRunsRule =
     "at least one run is reproduced and another not-reproduced, else inconclusive (some runs undecided, none "
     "contradicting another)";
 
+/// The figure's 95% interval as [lo, hi], null without enough repetitions.
+nlohmann::json ci95_json(const Measured& m);
+
 /// {"ratio" (or `name`), "ratio_ci95": [lo, hi] (null without enough repetitions), "band": [lo, hi] (null for
 /// an unbounded side), "repetitions", "processes", "verdict"}.
 nlohmann::json to_json(const Measured& m, Interval band, std::string_view name = "ratio");
