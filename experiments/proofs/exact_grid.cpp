@@ -1,5 +1,6 @@
 #include "experiments/proofs/exact_grid.hpp"
 
+#include "experiments/proofs/ginac_polynomial.hpp"
 #include "theory/exact/rational.hpp"
 
 #include <algorithm>
@@ -58,12 +59,6 @@ Integer to_integer(const GiNaC::numeric& n) {
   std::ostringstream text;
   text << n;
   return Integer(text.str());
-}
-
-std::string text_of(const GiNaC::ex& e) {
-  std::ostringstream out;
-  out << e;
-  return out.str();
 }
 
 class Program {

@@ -4,15 +4,12 @@
 #include <stdexcept>
 
 namespace affinterp::proofs {
-namespace {
 
 std::string text_of(const GiNaC::ex& e) {
   std::ostringstream out;
   out << e;
   return out.str();
 }
-
-}  // namespace
 
 logic::Polynomial to_polynomial(const GiNaC::ex& e) {
   if (GiNaC::is_a<GiNaC::numeric>(e)) {

@@ -5,11 +5,16 @@
 
 #include <ginac/ginac.h>
 
+#include <string>
+
 namespace affinterp::proofs {
 
 /// `e` as a polynomial with rational coefficients in its symbols (by name), expanded by theory/logic's own
 /// arithmetic. Throws std::invalid_argument when `e` is not one (a negative or non-integer power, a function, a
 /// non-rational number).
 logic::Polynomial to_polynomial(const GiNaC::ex& e);
+
+/// GiNaC's printed text of `e`, as transcripts and error messages show it.
+std::string text_of(const GiNaC::ex& e);
 
 }  // namespace affinterp::proofs

@@ -1,6 +1,7 @@
 #include "experiments/proofs/identity.hpp"
 
 #include "experiments/proofs/exact_grid.hpp"
+#include "experiments/proofs/ginac_polynomial.hpp"
 
 #include <chrono>
 #include <fstream>
@@ -16,12 +17,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-std::string text_of(const GiNaC::ex& e) {
-  std::ostringstream out;
-  out << e;
-  return out.str();
-}
 
 /// The entries of a side: the matrix's entries row by row, or the scalar itself.
 std::vector<GiNaC::ex> entries(const GiNaC::ex& side) {
