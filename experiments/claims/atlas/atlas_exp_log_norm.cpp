@@ -2,7 +2,7 @@
 #include "experiments/claims/claim.hpp"
 #include "experiments/proofs/citations.hpp"
 
-namespace affinterp::claims::atlas {
+namespace affinterp::claims::atlas::atlas_exp_log_norm {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -61,4 +61,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::atlas
+}  // namespace affinterp::claims::atlas::atlas_exp_log_norm

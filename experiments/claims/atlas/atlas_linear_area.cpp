@@ -3,7 +3,7 @@
 #include "experiments/proofs/goodness_formulas.hpp"
 #include "experiments/proofs/literal_formulations.hpp"
 
-namespace affinterp::claims::atlas {
+namespace affinterp::claims::atlas::atlas_linear_area {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -50,4 +50,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::atlas
+}  // namespace affinterp::claims::atlas::atlas_linear_area

@@ -6,7 +6,7 @@
 #include "experiments/proofs/lemma_sentences.hpp"
 #include "experiments/proofs/literal_formulations.hpp"
 
-namespace affinterp::claims::atlas {
+namespace affinterp::claims::atlas::atlas_linear_norm {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -76,4 +76,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::atlas
+}  // namespace affinterp::claims::atlas::atlas_linear_norm

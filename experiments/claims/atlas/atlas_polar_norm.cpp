@@ -4,7 +4,7 @@
 #include "experiments/proofs/goodness_formulas.hpp"
 #include "experiments/proofs/literal_formulations.hpp"
 
-namespace affinterp::claims::atlas {
+namespace affinterp::claims::atlas::atlas_polar_norm {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -55,4 +55,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::atlas
+}  // namespace affinterp::claims::atlas::atlas_polar_norm

@@ -3,7 +3,7 @@
 #include "experiments/proofs/goodness_formulas.hpp"
 #include "experiments/proofs/literal_formulations.hpp"
 
-namespace affinterp::claims::atlas {
+namespace affinterp::claims::atlas::atlas_svd_area {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -49,4 +49,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::atlas
+}  // namespace affinterp::claims::atlas::atlas_svd_area

@@ -3,7 +3,7 @@
 #include "experiments/proofs/condition_sentences.hpp"
 #include "experiments/proofs/goodness_formulas.hpp"
 
-namespace affinterp::claims::atlas {
+namespace affinterp::claims::atlas::atlas_svd_norm {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -126,4 +126,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::atlas
+}  // namespace affinterp::claims::atlas::atlas_svd_norm

@@ -3,7 +3,7 @@
 #include "experiments/claims/global/frame_identities.hpp"
 #include "experiments/claims/values.hpp"
 
-namespace affinterp::claims {
+namespace affinterp::claims::kaji_acol_constraint {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -113,4 +113,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::kaji_acol_constraint

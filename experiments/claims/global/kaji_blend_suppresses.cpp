@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-namespace affinterp::claims {
+namespace affinterp::claims::kaji_blend_suppresses {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -101,4 +101,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::kaji_blend_suppresses

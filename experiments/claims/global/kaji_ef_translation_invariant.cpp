@@ -4,7 +4,7 @@
 #include "experiments/claims/global/frame_identities.hpp"
 #include "experiments/claims/values.hpp"
 
-namespace affinterp::claims {
+namespace affinterp::claims::kaji_ef_translation_invariant {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -89,4 +89,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::kaji_ef_translation_invariant

@@ -6,7 +6,7 @@
 #include "experiments/proofs/identity.hpp"
 #include "theory/local/rotation.hpp"
 
-namespace affinterp::claims {
+namespace affinterp::claims::kaji_er_closed_form {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -131,4 +131,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::kaji_er_closed_form

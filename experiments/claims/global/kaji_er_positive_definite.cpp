@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace affinterp::claims {
+namespace affinterp::claims::kaji_er_positive_definite {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -157,4 +157,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::kaji_er_positive_definite

@@ -5,7 +5,7 @@
 #include "experiments/claims/values.hpp"
 #include "experiments/proofs/identity.hpp"
 
-namespace affinterp::claims {
+namespace affinterp::claims::kaji_er_similarity_invariant {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -85,4 +85,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::kaji_er_similarity_invariant

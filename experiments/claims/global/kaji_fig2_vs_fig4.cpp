@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace affinterp::claims {
+namespace affinterp::claims::kaji_fig2_vs_fig4 {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -73,4 +73,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::kaji_fig2_vs_fig4

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <string>
 
-namespace affinterp::claims {
+namespace affinterp::claims::kaji_fig3_vs_fig5 {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -82,4 +82,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::kaji_fig3_vs_fig5

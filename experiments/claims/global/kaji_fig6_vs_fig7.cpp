@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-namespace affinterp::claims {
+namespace affinterp::claims::kaji_fig6_vs_fig7 {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -171,4 +171,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::kaji_fig6_vs_fig7

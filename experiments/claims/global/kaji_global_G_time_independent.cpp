@@ -2,7 +2,7 @@
 #include "experiments/claims/global/exact_global.hpp"
 #include "experiments/claims/values.hpp"
 
-namespace affinterp::claims {
+namespace affinterp::claims::kaji_global_G_time_independent {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -111,4 +111,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::kaji_global_G_time_independent

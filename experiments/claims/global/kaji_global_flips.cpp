@@ -7,7 +7,7 @@
 #include <limits>
 #include <string>
 
-namespace affinterp::claims {
+namespace affinterp::claims::kaji_global_flips {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -71,4 +71,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::kaji_global_flips

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-namespace affinterp::claims {
+namespace affinterp::claims::kaji_symmetrization {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -120,4 +120,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::kaji_symmetrization

@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <vector>
 
-namespace affinterp::claims::local {
+namespace affinterp::claims::local::kaji_appendix_polar_from_svd {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -142,4 +142,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::local
+}  // namespace affinterp::claims::local::kaji_appendix_polar_from_svd

@@ -8,7 +8,7 @@
 
 #include <stdexcept>
 
-namespace affinterp::claims::local {
+namespace affinterp::claims::local::kaji_eq1_affine_map {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -102,4 +102,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::local
+}  // namespace affinterp::claims::local::kaji_eq1_affine_map

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace affinterp::claims::local {
+namespace affinterp::claims::local::kaji_exp_det_monotone {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -119,4 +119,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::local
+}  // namespace affinterp::claims::local::kaji_exp_det_monotone

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <string>
 
-namespace affinterp::claims::local {
+namespace affinterp::claims::local::kaji_exp_det_positive {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -93,4 +93,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::local
+}  // namespace affinterp::claims::local::kaji_exp_det_positive

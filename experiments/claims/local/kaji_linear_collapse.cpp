@@ -9,7 +9,7 @@
 
 #include <algorithm>
 
-namespace affinterp::claims::local {
+namespace affinterp::claims::local::kaji_linear_collapse {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -73,4 +73,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::local
+}  // namespace affinterp::claims::local::kaji_linear_collapse

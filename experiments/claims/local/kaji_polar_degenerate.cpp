@@ -8,7 +8,7 @@
 #include <optional>
 #include <utility>
 
-namespace affinterp::claims::local {
+namespace affinterp::claims::local::kaji_polar_degenerate {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -154,4 +154,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::local
+}  // namespace affinterp::claims::local::kaji_polar_degenerate

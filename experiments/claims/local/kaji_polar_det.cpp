@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <vector>
 
-namespace affinterp::claims::local {
+namespace affinterp::claims::local::kaji_polar_det {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -150,4 +150,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::local
+}  // namespace affinterp::claims::local::kaji_polar_det

@@ -8,7 +8,7 @@
 
 #include <algorithm>
 
-namespace affinterp::claims::local {
+namespace affinterp::claims::local::kaji_svd_degenerate {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -92,4 +92,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::local
+}  // namespace affinterp::claims::local::kaji_svd_degenerate

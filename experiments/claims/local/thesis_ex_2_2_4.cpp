@@ -6,7 +6,7 @@
 #include "theory/local/quadratic_field.hpp"
 #include "theory/local/svd_norm_goodness.hpp"
 
-namespace affinterp::claims::local {
+namespace affinterp::claims::local::thesis_ex_2_2_4 {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -214,4 +214,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::local
+}  // namespace affinterp::claims::local::thesis_ex_2_2_4

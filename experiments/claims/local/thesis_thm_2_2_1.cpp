@@ -11,7 +11,7 @@
 #include <cstdlib>
 #include <optional>
 
-namespace affinterp::claims::local {
+namespace affinterp::claims::local::thesis_thm_2_2_1 {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -128,4 +128,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::local
+}  // namespace affinterp::claims::local::thesis_thm_2_2_1

@@ -9,7 +9,7 @@
 
 #include <utility>
 
-namespace affinterp::claims::local {
+namespace affinterp::claims::local::thesis_thm_2_2_2 {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -94,4 +94,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::local
+}  // namespace affinterp::claims::local::thesis_thm_2_2_2

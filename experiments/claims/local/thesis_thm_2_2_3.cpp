@@ -16,7 +16,7 @@
 #include <tuple>
 #include <vector>
 
-namespace affinterp::claims::local {
+namespace affinterp::claims::local::thesis_thm_2_2_3 {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -266,4 +266,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::local
+}  // namespace affinterp::claims::local::thesis_thm_2_2_3

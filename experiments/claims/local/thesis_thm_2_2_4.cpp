@@ -9,7 +9,7 @@
 
 #include <tuple>
 
-namespace affinterp::claims::local {
+namespace affinterp::claims::local::thesis_thm_2_2_4 {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -105,4 +105,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::local
+}  // namespace affinterp::claims::local::thesis_thm_2_2_4

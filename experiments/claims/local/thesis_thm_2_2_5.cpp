@@ -13,7 +13,7 @@
 #include <tuple>
 #include <vector>
 
-namespace affinterp::claims::local {
+namespace affinterp::claims::local::thesis_thm_2_2_5 {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -149,4 +149,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::local
+}  // namespace affinterp::claims::local::thesis_thm_2_2_5

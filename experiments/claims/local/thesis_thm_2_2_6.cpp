@@ -8,7 +8,7 @@
 
 #include <tuple>
 
-namespace affinterp::claims::local {
+namespace affinterp::claims::local::thesis_thm_2_2_6 {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -136,4 +136,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::local
+}  // namespace affinterp::claims::local::thesis_thm_2_2_6

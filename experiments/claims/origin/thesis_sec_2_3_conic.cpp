@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-namespace affinterp::claims {
+namespace affinterp::claims::thesis_sec_2_3_conic {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -197,4 +197,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::thesis_sec_2_3_conic

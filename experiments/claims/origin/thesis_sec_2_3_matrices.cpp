@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace affinterp::claims {
+namespace affinterp::claims::thesis_sec_2_3_matrices {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -191,4 +191,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::thesis_sec_2_3_matrices

@@ -8,7 +8,7 @@
 #include "theory/origin/printed_section_2_3.hpp"
 #include "theory/origin/symbols.hpp"
 
-namespace affinterp::claims {
+namespace affinterp::claims::thesis_sec_2_3_min_energy {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -100,4 +100,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::thesis_sec_2_3_min_energy

@@ -11,7 +11,7 @@
 #include <optional>
 #include <string>
 
-namespace affinterp::claims {
+namespace affinterp::claims::thesis_sec_2_3_minimiser {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -139,4 +139,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::thesis_sec_2_3_minimiser

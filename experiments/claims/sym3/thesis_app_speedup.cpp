@@ -8,7 +8,7 @@
 #include <string_view>
 #include <variant>
 
-namespace affinterp::claims::sym3 {
+namespace affinterp::claims::sym3::thesis_app_speedup {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -76,4 +76,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::sym3
+}  // namespace affinterp::claims::sym3::thesis_app_speedup

@@ -5,7 +5,7 @@
 #include <string_view>
 #include <variant>
 
-namespace affinterp::claims::sym3 {
+namespace affinterp::claims::sym3::thesis_eig_speedup {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -60,4 +60,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::sym3
+}  // namespace affinterp::claims::sym3::thesis_eig_speedup

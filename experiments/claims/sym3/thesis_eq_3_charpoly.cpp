@@ -7,7 +7,7 @@
 
 #include <stdexcept>
 
-namespace affinterp::claims::sym3 {
+namespace affinterp::claims::sym3::thesis_eq_3_charpoly {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -112,4 +112,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::sym3
+}  // namespace affinterp::claims::sym3::thesis_eq_3_charpoly

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace affinterp::claims::sym3 {
+namespace affinterp::claims::sym3::thesis_exp_accuracy {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -282,4 +282,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::sym3
+}  // namespace affinterp::claims::sym3::thesis_exp_accuracy

@@ -8,7 +8,7 @@
 #include <variant>
 #include <vector>
 
-namespace affinterp::claims::sym3 {
+namespace affinterp::claims::sym3::thesis_exp_speedup {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -119,4 +119,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::sym3
+}  // namespace affinterp::claims::sym3::thesis_exp_speedup

@@ -5,7 +5,7 @@
 #include "experiments/proofs/identity.hpp"
 #include "theory/sym3/spectral_decomposition.hpp"
 
-namespace affinterp::claims::sym3 {
+namespace affinterp::claims::sym3::thesis_sd_case1 {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -60,4 +60,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::sym3
+}  // namespace affinterp::claims::sym3::thesis_sd_case1

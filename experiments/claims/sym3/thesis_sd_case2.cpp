@@ -5,7 +5,7 @@
 #include "experiments/proofs/identity.hpp"
 #include "theory/sym3/spectral_decomposition.hpp"
 
-namespace affinterp::claims::sym3 {
+namespace affinterp::claims::sym3::thesis_sd_case2 {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -68,4 +68,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::sym3
+}  // namespace affinterp::claims::sym3::thesis_sd_case2

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace affinterp::claims::sym3 {
+namespace affinterp::claims::sym3::thesis_sd_case3 {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -145,4 +145,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::sym3
+}  // namespace affinterp::claims::sym3::thesis_sd_case3

@@ -15,7 +15,7 @@
 #include <cmath>
 #include <string>
 
-namespace affinterp::claims::sym3 {
+namespace affinterp::claims::sym3::thesis_viete {
 namespace {
 
 Outcome check(const ClaimContext& ctx);
@@ -268,4 +268,4 @@ Outcome check(const ClaimContext& ctx) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::sym3
+}  // namespace affinterp::claims::sym3::thesis_viete

@@ -13,7 +13,7 @@ namespace affinterp::shapes {
 namespace {
 
 using Eigen::Vector2d;
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 /// The right half of the outline, clockwise from the top of the head to the crotch (x ≥ 0).
 Outline right_half() {
