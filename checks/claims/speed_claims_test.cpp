@@ -123,6 +123,19 @@ TEST(SpeedClaims, ExponentialNeedsPlainSdInBetween) {
   EXPECT_EQ(check_exp_speedup(disordered).verdict, Verdict::not_reproduced);
 }
 
+TEST(SpeedClaims, TheBatchedExponentialsTimeIsSplitIntoItsExponentialsAndTheRest) {
+  auto run = write_bench("bench_exp3", "ns_per_matrix",
+                         {{"exp3/eigen-qr-diag", 420},
+                          {"exp3/thesis-sd-corrected", 200},
+                          {"exp3/thesis-improved-sd", 100},
+                          {"exp3/affinterp-batched", 16},
+                          {"exp3-parts/affinterp-batched-exponentials", 9}});
+  const auto parts = check_exp_speedup(run).evidence.measurements["affinterp_targets"]["batched_ns_per_matrix_parts"];
+  ASSERT_TRUE(parts.is_object());
+  EXPECT_DOUBLE_EQ(parts["four_exponentials"].get<double>(), 9);
+  EXPECT_DOUBLE_EQ(parts["split_assembly_and_layout"].get<double>(), 7);
+}
+
 TEST(SpeedClaims, ApplicationSlowdownIsNotReproduced) {
   auto slower =
       write_bench("bench_app3", "ns_per_frame", {{"app/eigen-qr-diag", 10e6}, {"app/thesis-improved-sd", 11e6}});

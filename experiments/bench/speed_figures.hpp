@@ -32,6 +32,8 @@ inline constexpr std::string_view exp_sd = "exp3/thesis-sd-corrected";          
 inline constexpr std::string_view exp_improved_sd = "exp3/thesis-improved-sd";  ///< SD with Viète's eigenvalues
 inline constexpr std::string_view exp_ours = "exp3/affinterp";
 inline constexpr std::string_view exp_ours_batched = "exp3/affinterp-batched";
+/// Its four exponentials alone (xsimd's exp), the part of its time a faster exp would take off.
+inline constexpr std::string_view exp_ours_batched_exponentials = "exp3-parts/affinterp-batched-exponentials";
 inline constexpr std::string_view exp_direct_diag = "exp3/eigen-direct-diag";
 inline constexpr std::string_view exp_pade = "exp3/eigen-pade";
 inline constexpr std::string_view app_diag = "app/eigen-qr-diag";
