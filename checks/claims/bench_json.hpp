@@ -30,6 +30,12 @@ inline nlohmann::json repeated(const std::string& name, double ms, double triang
   return runs;
 }
 
+/// `runs` (as repeated() writes them) with the user counter `counter` = `value` on each.
+inline nlohmann::json with_counter(nlohmann::json runs, const std::string& counter, double value) {
+  for (auto& run : runs) run[counter] = value;
+  return runs;
+}
+
 inline nlohmann::json concatenated(std::initializer_list<nlohmann::json> parts) {
   nlohmann::json all = nlohmann::json::array();
   for (const auto& part : parts) all.insert(all.end(), part.begin(), part.end());

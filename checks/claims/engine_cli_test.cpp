@@ -28,11 +28,11 @@ nlohmann::json judged(const nlohmann::json& benchmarks) {
 TEST(EngineCli, JudgesEachEnergysCliFrameAgainstTheEnginesOnTheRatiosInterval) {
   // E^F 1.2 times the engine (1.05 into memory), E^R 1.33 times (both within 1%); E^S 1.3 times with a 20% spread:
   // undecided.
-  const nlohmann::json table =
-      judged(concatenated({repeated("cli_frame/F/1000000", 120, 1e6), repeated("cli_frame_memory/F/1000000", 105, 1e6),
-                           repeated("engine_frame/F/1000000", 100, 1e6), repeated("cli_frame/R/1000000", 800, 1e6),
-                           repeated("engine_frame/R/1000000", 600, 1e6), repeated("cli_frame/S/1000000", 130, 1e6, 0.2),
-                           repeated("engine_frame/S/1000000", 100, 1e6, 0.2)}));
+  const nlohmann::json table = judged(concatenated(
+      {with_counter(repeated("cli_frame/F/1000000", 120, 1e6), "extra_frames", 32),
+       repeated("cli_frame_memory/F/1000000", 105, 1e6), repeated("engine_frame/F/1000000", 100, 1e6),
+       repeated("cli_frame/R/1000000", 800, 1e6), repeated("engine_frame/R/1000000", 600, 1e6),
+       repeated("cli_frame/S/1000000", 130, 1e6, 0.2), repeated("engine_frame/S/1000000", 100, 1e6, 0.2)}));
   ASSERT_EQ(table["rows"].size(), 3u);
   EXPECT_EQ(table["triangles"], 1e6);
   EXPECT_EQ(table["machine"], "test cpu");
@@ -43,6 +43,8 @@ TEST(EngineCli, JudgesEachEnergysCliFrameAgainstTheEnginesOnTheRatiosInterval) {
   ASSERT_TRUE(F["ratio_ci95"].is_array());
   EXPECT_LT(F["ratio_ci95"][1].get<double>(), 1.3);
   EXPECT_EQ(F["verdict"], "reproduced");
+  EXPECT_EQ(F["extra_frames"], 32);
+  EXPECT_FALSE(table["rows"][1].contains("extra_frames")) << "not recorded for E^R";
   EXPECT_DOUBLE_EQ(F["memory_ratio"].get<double>(), 1.05) << "the same CLI runs writing into memory";
   EXPECT_FALSE(table["rows"][1].contains("memory_ratio")) << "E^R was not run into memory";
   EXPECT_EQ(table["rows"][1]["verdict"], "not-reproduced") << "800 / 600 > 1.3";
@@ -51,7 +53,8 @@ TEST(EngineCli, JudgesEachEnergysCliFrameAgainstTheEnginesOnTheRatiosInterval) {
 
   const std::string md = report::render_markdown(
       {{"claims", nlohmann::json::array()}, {"environment", nlohmann::json::object()}, {"engine_cli", table}});
-  EXPECT_NE(md.find("| E^R | 800.0 | 600.0 | 1.33 ("), std::string::npos) << md;
+  EXPECT_NE(md.find("| E^F | 32 | 120.0 | 100.0 | 1.20 ("), std::string::npos) << md;
+  EXPECT_NE(md.find("| E^R | — | 800.0 | 600.0 | 1.33 ("), std::string::npos) << md;
   EXPECT_NE(md.find("| 10 | **no** | — | — |"), std::string::npos) << md;
   EXPECT_NE(md.find("| 10 | yes | 105.0 | 1.05 ("), std::string::npos) << md;
   EXPECT_NE(md.find("| 10 | undecided |"), std::string::npos) << md;

@@ -20,6 +20,7 @@ nlohmann::json engine_cli(const std::filesystem::path& bench_file) {
   const std::optional<bench::BenchResults> times = bench::read_bench_results(bench_file, "real_time");
   if (!times) return nullptr;
   const std::optional<bench::BenchResults> sizes = bench::read_bench_results(bench_file, "triangles");
+  const std::optional<bench::BenchResults> extra = bench::read_bench_results(bench_file, "extra_frames");
   nlohmann::json table{{"file", bench_file.filename().string()},
                        {"machine", times->machine},
                        {"target_ratio", target_ratio},
@@ -37,6 +38,7 @@ nlohmann::json engine_cli(const std::filesystem::path& bench_file) {
     row["energy"] = rest.substr(0, rest.find('/'));
     row["cli_frame_ms"] = cli_ms;
     row["engine_frame_ms"] = *engine_ms;
+    if (const auto extra_frames = extra ? (*extra)[name] : std::nullopt) row["extra_frames"] = *extra_frames;
     const std::string memory = "cli_frame_memory/" + rest;  // the same CLI runs writing into memory
     if (const std::optional<double> memory_ms = (*times)[memory]) {
       const Measured memory_ratio = measured_ratio(*times, memory, engine);

@@ -409,21 +409,21 @@ void write_engine_cli(std::ostringstream& md, const json& cli) {
   md << "`build/bin/bench_cli_scale`: `affinterp interpolate --format npy --no-figures --metrics none` on "
         "`affinterp shapes strip-spiral --quads 2000x250` ("
      << fixed(cli.value("triangles", json()), 0)
-     << " triangles, a strip 18.8 × 2 rolled 1.5 turns), run as a process for 2 frames and for 32 (E^F) or 8 (E^R) "
-        "more: a frame through the CLI, writing included, is the difference over the extra frames; the engine's frame "
-        "is `vertices_at(times)` of 8 frames on the same pair, per frame, in the benchmark's own process (glibc's "
-        "default allocator; the CLI keeps freed arrays in its heap, `experiments/apps/cli/main.cpp`). Medians of the "
-        "repetitions, the ratio with its 95% bootstrap interval. Machine: "
+     << " triangles, a strip 18.8 × 2 rolled 1.5 turns), run as a process for 2 frames and for the table's extra "
+        "frames more: a frame through the CLI, writing included, is the difference over the extra frames; the engine's "
+        "frame is `vertices_at(times)` of 8 frames on the same pair, per frame, in the benchmark's own process "
+        "(glibc's default allocator; the CLI keeps freed arrays in its heap, `experiments/apps/cli/main.cpp`). "
+        "Medians of the repetitions, the ratio with its 95% bootstrap interval. Machine: "
      << cell(cli.value("machine", "?")) << ". Target: the CLI within " << fixed(cli.value("target_ratio", json()), 1)
      << "× the engine (met when the interval lies at or below it): " << met_cell(cli.value("verdict", json()))
      << ". The CLI's frames written into memory (`/dev/shm`) instead of the temporary folder's file system show "
         "what writing them costs there.\n\n"
-        "| energy | CLI frame (ms) | engine frame (ms) | CLI / engine | repetitions | met | CLI frame into memory (ms) "
-        "| into memory / engine |\n|---|---|---|---|---|---|---|---|\n";
+        "| energy | extra frames | CLI frame (ms) | engine frame (ms) | CLI / engine | repetitions | met | CLI frame "
+        "into memory (ms) | into memory / engine |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& row : cli.value("rows", json::array()))
-    md << "| E^" << row.value("energy", "") << " | " << fixed(row.value("cli_frame_ms", json()), 1) << " | "
-       << fixed(row.value("engine_frame_ms", json()), 1) << " | "
-       << with_ci(row.value("ratio", json()), row.value("ratio_ci95", json()), 2) << " | "
+    md << "| E^" << row.value("energy", "") << " | " << fixed(row.value("extra_frames", json()), 0) << " | "
+       << fixed(row.value("cli_frame_ms", json()), 1) << " | " << fixed(row.value("engine_frame_ms", json()), 1)
+       << " | " << with_ci(row.value("ratio", json()), row.value("ratio_ci95", json()), 2) << " | "
        << row.value("repetitions", 0) << " | " << met_cell(row.value("verdict", json())) << " | "
        << fixed(row.value("cli_memory_frame_ms", json()), 1) << " | "
        << with_ci(row.value("memory_ratio", json()), row.value("memory_ratio_ci95", json()), 2) << " |\n";

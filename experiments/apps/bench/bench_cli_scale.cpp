@@ -85,6 +85,7 @@ void cli_frame(benchmark::State& state, Energy energy, const fs::path& parent) {
     state.SetIterationTime((long_seconds - short_seconds) / extra_frames(energy));
   }
   state.counters["triangles"] = static_cast<double>(workload().pair.source.triangle_count());
+  state.counters["extra_frames"] = extra_frames(energy);
 }
 
 void engine_frame(benchmark::State& state, Energy energy) {
