@@ -168,7 +168,7 @@ nlohmann::json target_verdicts(const nlohmann::json& rows, std::size_t r, const 
   if (p.is_number()) std::snprintf(exponent_text, sizeof exponent_text, "%.2f", p.get<double>());
   std::string growth_cause = "the factorisation alone grows as n^" + std::string(exponent_text) + " (" + back_end + ")";
   if (r > 0 && rows[r - 1]["frame_R_ms"].is_number() && rows[r - 1]["batch_R_ms"].is_number())
-    growth_cause += ", and the batch's gain over single frames fell from " +
+    growth_cause += ", and the batch's gain over single frames went from " +
                     times(rows[r - 1]["frame_R_ms"].get<double>() / rows[r - 1]["batch_R_ms"].get<double>()) + " to " +
                     times(batch_gain);
   add("E^R batched frame's growth from the size before", growth_R, growth_R_target, growth_cause);
