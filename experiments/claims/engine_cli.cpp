@@ -33,8 +33,9 @@ nlohmann::json engine_cli(const std::filesystem::path& bench_file) {
     if (!engine_ms) continue;
     if (const auto triangles = sizes ? (*sizes)[name] : std::nullopt) table["triangles"] = *triangles;
     const Measured ratio = measured_ratio(*times, name, engine);
-    verdicts.push_back(verdict_of(ratio, {0, target_ratio}));
-    nlohmann::json row = to_json(ratio, {0, target_ratio});  // ratio, its interval, repetitions, verdict
+    const Interval band{0, target_ratio};
+    verdicts.push_back(verdict_of(ratio, band));
+    nlohmann::json row = to_json(ratio, band);  // ratio, its interval, repetitions, verdict
     row["energy"] = rest.substr(0, rest.find('/'));
     row["cli_frame_ms"] = cli_ms;
     row["engine_frame_ms"] = *engine_ms;

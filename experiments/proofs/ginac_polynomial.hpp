@@ -14,7 +14,8 @@ namespace affinterp::proofs {
 /// non-rational number).
 logic::Polynomial to_polynomial(const GiNaC::ex& e);
 
-/// GiNaC's printed text of `e`, as transcripts and error messages show it.
+/// GiNaC's printed text of `e`, as transcripts and error messages show it. Its term order follows GiNaC's internal
+/// hash values, which differ from run to run: a stable text only for numbers and lone symbols.
 std::string text_of(const GiNaC::ex& e);
 
 }  // namespace affinterp::proofs

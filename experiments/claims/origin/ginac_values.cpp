@@ -1,5 +1,6 @@
 #include "experiments/claims/origin/ginac_values.hpp"
 
+#include "experiments/proofs/ginac_polynomial.hpp"
 #include "theory/exact/rational.hpp"
 #include "theory/origin/equal_energy_locus.hpp"
 #include "theory/origin/symbols.hpp"
@@ -9,14 +10,6 @@
 
 namespace affinterp::claims {
 namespace {
-
-/// GiNaC's own printing. Its term order follows internal hash values that differ from run to run, so it
-/// serves only numbers and lone symbols.
-std::string ginac_text(const GiNaC::ex& e) {
-  std::ostringstream out;
-  out << e;
-  return out.str();
-}
 
 /// Whether `e` is a polynomial in the origin's x, y with rational coefficients.
 bool rational_polynomial_in_origin(const GiNaC::ex& e) {
@@ -46,9 +39,9 @@ GiNaC::numeric leading_coefficient(const GiNaC::ex& P) {
 
 std::string exact_number(const GiNaC::ex& e) {
   if (!GiNaC::is_a<GiNaC::numeric>(e) || !GiNaC::ex_to<GiNaC::numeric>(e).is_rational())
-    throw std::invalid_argument("exact_number: not a rational number: " + ginac_text(e));
+    throw std::invalid_argument("exact_number: not a rational number: " + proofs::text_of(e));
   // GiNaC prints rationals as p/q; parsing through the suite's own type fixes the exchange format.
-  return exact::to_string(exact::parse_rational(ginac_text(e)));
+  return exact::to_string(exact::parse_rational(proofs::text_of(e)));
 }
 
 nlohmann::json exact_matrix(const GiNaC::matrix& m) {
@@ -64,7 +57,8 @@ nlohmann::json exact_matrix(const GiNaC::matrix& m) {
 std::string formula(const GiNaC::ex& e) {
   const GiNaC::ex fraction = e.normal().numer_denom();
   const GiNaC::ex numerator = fraction.op(0), denominator = fraction.op(1);
-  if (!rational_polynomial_in_origin(numerator) || !rational_polynomial_in_origin(denominator)) return ginac_text(e);
+  if (!rational_polynomial_in_origin(numerator) || !rational_polynomial_in_origin(denominator))
+    return proofs::text_of(e);
   // The reduced fraction with a denominator whose leading coefficient is 1: the same text for the same
   // function, whatever order GiNaC holds the terms in.
   const GiNaC::numeric lead = leading_coefficient(denominator);
