@@ -16,25 +16,68 @@ namespace {
 template <class Scalar>
 constexpr int xtype = std::is_same_v<Scalar, double> ? CHOLMOD_REAL : CHOLMOD_COMPLEX;
 
-/// Asks CHOLMOD's BLAS for one thread, once per process, when it is OpenBLAS (openblas_set_num_threads, found
-/// at run time in the loaded library; with another BLAS nothing changes). The engine runs frames in parallel
-/// itself, and OpenBLAS's pool of threads, shared by concurrent callers and spinning between calls, made a batch
-/// of E^R frames at 1M triangles 2.8x slower on 2 cores (bench_scale batch_frames/R, OPENBLAS_NUM_THREADS=2
-/// against 1). One thread also makes the factor the same whatever the machine's thread count. This sets the
-/// thread count of the process's OpenBLAS (numpy's too, in the Python module).
+/// `name` in a library CHOLMOD loaded: found in the process's global scope, or in `library` by its name when
+/// CHOLMOD was loaded with RTLD_LOCAL (the Python module's). Null when it is not there (another library in
+/// its place).
+void* loaded_symbol(const char* library, const char* name) {
+  if (void* symbol = dlsym(RTLD_DEFAULT, name)) return symbol;
+  void* handle = dlopen(library, RTLD_NOW | RTLD_NOLOAD);
+  if (!handle) return nullptr;
+  void* symbol = dlsym(handle, name);
+  dlclose(handle);  // CHOLMOD's own reference keeps it loaded
+  return symbol;
+}
+
+/// CHOLMOD's BLAS on one thread, once per process, when it is OpenBLAS: the engine runs frames in parallel
+/// itself, and OpenBLAS's pool of threads, shared by concurrent callers and spinning between calls, made a
+/// batch of E^R frames at 1M triangles 2.8x slower on 2 cores (bench_scale batch_frames/R,
+/// OPENBLAS_NUM_THREADS=2 against 1). One thread also makes the factor the same whatever the machine's
+/// thread count. This sets the thread count of the process's OpenBLAS (numpy's too, in the Python module).
 void single_threaded_blas() {
   static std::once_flag once;
   std::call_once(once, [] {
-    using SetThreads = void (*)(int);
-    void* symbol = dlsym(RTLD_DEFAULT, "openblas_set_num_threads");
-    if (!symbol)  // a library loaded with RTLD_LOCAL (the Python module's CHOLMOD) is found by its name
-      if (void* openblas = dlopen("libopenblas.so.0", RTLD_NOW | RTLD_NOLOAD)) {
-        if (void* set = dlsym(openblas, "openblas_set_num_threads")) reinterpret_cast<SetThreads>(set)(1);
-        dlclose(openblas);  // CHOLMOD's own reference keeps it loaded
-      }
-    if (symbol) reinterpret_cast<SetThreads>(symbol)(1);
+    if (void* set = loaded_symbol("libopenblas.so.0", "openblas_set_num_threads"))
+      reinterpret_cast<void (*)(int)>(set)(1);
   });
 }
+
+/// No OpenMP team inside CHOLMOD's numeric calls while it lives, for the same reason: Debian's CHOLMOD clears
+/// its workspace in OpenMP loops of a fixed 4 threads (CHOLMOD_OMP_NUM_THREADS, compiled in, above
+/// OMP_NUM_THREADS), a team woken for each large supernode; on 2 cores those 4 threads took turns, and a
+/// factorisation at 1M triangles took 1.8 s of wall clock instead of 1.1 (bench_scale backend_factor/F,
+/// OMP_THREAD_LIMIT=1 against unset). It sets the calling thread's limit of active parallel levels to 0
+/// (libgomp keeps one per thread), so that every team is the calling thread alone, and restores it after.
+class WithoutOpenMpTeams {
+ public:
+  WithoutOpenMpTeams() {
+    if (!levels().get) return;
+    saved_ = levels().get();
+    levels().set(0);
+  }
+  ~WithoutOpenMpTeams() {
+    if (levels().get) levels().set(saved_);
+  }
+  WithoutOpenMpTeams(const WithoutOpenMpTeams&) = delete;
+  WithoutOpenMpTeams& operator=(const WithoutOpenMpTeams&) = delete;
+
+ private:
+  struct Levels {
+    int (*get)() = nullptr;
+    void (*set)(int) = nullptr;
+  };
+  /// libgomp's omp_get_max_active_levels and omp_set_max_active_levels, when CHOLMOD loaded it.
+  static const Levels& levels() {
+    static const Levels found = [] {
+      Levels l;
+      void* get = loaded_symbol("libgomp.so.1", "omp_get_max_active_levels");
+      void* set = loaded_symbol("libgomp.so.1", "omp_set_max_active_levels");
+      if (get && set) l.get = reinterpret_cast<int (*)()>(get), l.set = reinterpret_cast<void (*)(int)>(set);
+      return l;
+    }();
+    return found;
+  }
+  int saved_ = 0;
+};
 
 void start(cholmod_common& common) {
   single_threaded_blas();
@@ -89,6 +132,7 @@ template <class Scalar>
 bool CholmodFactor<Scalar>::factorise(const SparseMatrix& K) {
   if (!L_) analyse(K);  // a real factor was turned into columns of our own below: supernodes again for this one
   cholmod_sparse A = view(K);
+  const WithoutOpenMpTeams serial;
   const int ok = cholmod_factorize(&A, L_, &common_);
   if (!ok || common_.status != CHOLMOD_OK || L_->minor != L_->n) return false;
   // (min / max of diag L)² is the ratio of the smallest to the largest pivot of the LDLᴴ form
@@ -144,7 +188,10 @@ void CholmodFactor<Scalar>::solve_in_place(Block& X) const {
   b.nzmax = b.nrow * b.ncol, b.d = b.nrow;
   b.x = B.data();
   b.xtype = xtype<Scalar>, b.dtype = CHOLMOD_DOUBLE;
-  cholmod_dense* x = cholmod_solve(CHOLMOD_A, L_, &b, &common);
+  cholmod_dense* x = [&] {
+    const WithoutOpenMpTeams serial;
+    return cholmod_solve(CHOLMOD_A, L_, &b, &common);
+  }();
   if (!x) {
     cholmod_finish(&common);
     throw std::runtime_error("CHOLMOD's solve failed (status " + std::to_string(common.status) + ")");
