@@ -121,9 +121,11 @@ void expect_back_ends_agree() {
     auto factor = make_sparse_factor<Scalar>(back_end);
     factor->analyse(K);
     ASSERT_TRUE(factor->factorise(K));
-    Block X = B;
-    factor->clone()->solve_in_place(X);  // a clone holds the same factor
+    Block X = B, on_two_threads = B;
+    factor->clone()->solve_in_place(X, 1);  // a clone holds the same factor
+    factor->solve_in_place(on_two_threads, 2);
     EXPECT_LT((Block(full * X) - B).cwiseAbs().maxCoeff(), 1e-12) << static_cast<int>(back_end);
+    EXPECT_TRUE(X == on_two_threads) << static_cast<int>(back_end);
   }
 }
 

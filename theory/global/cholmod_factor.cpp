@@ -153,7 +153,8 @@ bool CholmodFactor<Scalar>::factorise(const SparseMatrix& K) {
                        {},
                        {},
                        Eigen::VectorXd(n),
-                       std::vector<int>(static_cast<const int*>(L_->Perm), static_cast<const int*>(L_->Perm) + n)};
+                       std::vector<int>(static_cast<const int*>(L_->Perm), static_cast<const int*>(L_->Perm) + n),
+                       split_subtrees(n, p, i, 1)};  // from the structure, the amalgamation's zeros included
     columns_.row.reserve(static_cast<std::size_t>(p[n])), columns_.value.reserve(static_cast<std::size_t>(p[n]));
     for (Eigen::Index j = 0; j < n; ++j) {
       columns_.D[j] = x[p[j]];  // each column's diagonal first
@@ -167,15 +168,16 @@ bool CholmodFactor<Scalar>::factorise(const SparseMatrix& K) {
 }
 
 template <class Scalar>
-void CholmodFactor<Scalar>::solve_in_place(Block& X) const {
+void CholmodFactor<Scalar>::solve_in_place(Block& X, std::size_t threads) const {
   if constexpr (std::is_same_v<Scalar, double>) {
     if (!L_) {  // P x = L D Lᵀ Pᵀ x, perm[k] the unknown of pivot k
       const std::vector<int>& perm = columns_.perm;
       Block Y(X.rows(), X.cols());
       for (Eigen::Index k = 0; k < X.rows(); ++k) Y.row(k) = X.row(perm[static_cast<std::size_t>(k)]);
-      ldl_solve_in_place(LdlColumns<double>{columns_.D.size(), columns_.start.data(), columns_.row.data(),
-                                            columns_.value.data(), 0, columns_.D.data()},
-                         Y);
+      ldl_solve_in_place(
+          LdlColumns<double>{columns_.D.size(), columns_.start.data(), columns_.row.data(), columns_.value.data(), 0,
+                             columns_.D.data(), columns_.subtrees ? &*columns_.subtrees : nullptr},
+          Y, threads);
       for (Eigen::Index k = 0; k < X.rows(); ++k) X.row(perm[static_cast<std::size_t>(k)]) = Y.row(k);
       return;
     }

@@ -99,12 +99,12 @@ struct Interpolation::Engine {
   Workspace* first_workspace = nullptr;
 
   /// v(t) at a t in range, when H is fixed: L [x y] = [Re b, Im b], both columns in one solve; the
-  /// right-hand side on `threads` threads.
+  /// right-hand side and the solve on up to `threads` threads.
   Eigen::Matrix2Xd isotropic_frame(double t, std::size_t threads) const {
     const Eigen::VectorXcd b = assembly->right_hand_side_at(t, threads);  // H z = −ũ/2 (hermitian_form.hpp)
     Eigen::MatrixXd xy(b.size(), 2);
     xy << b.real(), b.imag();
-    return fixed.solve(xy).transpose();
+    return fixed.solve(xy, threads).transpose();
   }
   /// v(t) at a t in range, when H(t) changes with A_i(t): a numeric factorisation per frame in `work`.
   Eigen::Matrix2Xd frame_in(Workspace& work, double t) const {

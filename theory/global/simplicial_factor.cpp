@@ -41,12 +41,12 @@ bool SimplicialFactor<Scalar>::factorise(const SparseMatrix& K) {
 }
 
 template <class Scalar>
-void SimplicialFactor<Scalar>::solve_in_place(Block& X) const {
+void SimplicialFactor<Scalar>::solve_in_place(Block& X, std::size_t) const {
   const SparseMatrix& L = ldlt_.matrixL().nestedExpression();  // unit lower triangle, diagonal not stored
   Block Y = ldlt_.permutationP() * X;
   ldl_solve_in_place(
       LdlColumns<Scalar>{L.outerSize(), L.outerIndexPtr(), L.innerIndexPtr(), L.valuePtr(), 0, ldlt_.vectorD().data()},
-      Y);
+      Y, 1);
   X = ldlt_.permutationPinv() * Y;
 }
 

@@ -15,7 +15,8 @@ class SimplicialFactor final : public SparseFactor<Scalar> {
 
   void analyse(const SparseMatrix& K) override;
   bool factorise(const SparseMatrix& K) override;
-  void solve_in_place(Block& X) const override;
+  /// On the calling thread (Eigen's ordering is not postordered: ldl_subtrees.hpp).
+  void solve_in_place(Block& X, std::size_t threads) const override;
   std::unique_ptr<SparseFactor<Scalar>> clone() const override;
   SparseBackEnd back_end() const override { return SparseBackEnd::simplicial; }
   double factor_bytes() const override;

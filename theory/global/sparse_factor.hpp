@@ -34,8 +34,9 @@ class SparseFactor {
   /// The numeric factorisation of K (same pattern as analysed). False when K is not numerically positive
   /// definite: a pivot not above 10⁻¹² times the largest (a ratio, so whatever the mesh's units or size).
   virtual bool factorise(const SparseMatrix& K) = 0;
-  /// X ← K⁻¹ X. Safe to call from several threads at once on one factor.
-  virtual void solve_in_place(Block& X) const = 0;
+  /// X ← K⁻¹ X, on up to `threads` threads where the back-end can (the same X whatever their number). Safe
+  /// to call from several threads at once on one factor.
+  virtual void solve_in_place(Block& X, std::size_t threads) const = 0;
   /// A copy holding the same analysis and factor: a workspace for another thread.
   virtual std::unique_ptr<SparseFactor> clone() const = 0;
   virtual SparseBackEnd back_end() const = 0;

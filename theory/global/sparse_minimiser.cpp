@@ -36,21 +36,21 @@ void SparseMinimiser<Scalar>::factorise(const SparseMatrix& K) {
         "(is the mesh in one connected piece, with every vertex in a triangle?)");
   if (!dense_ || dense_->grounded) return;
   typename SparseFactor<Scalar>::Block y = alpha_;
-  factor_->solve_in_place(y);
+  factor_->solve_in_place(y, 1);
   K_inverse_alpha_ = y.col(0);
   alpha_K_alpha_ = alpha_.dot(K_inverse_alpha_);
 }
 
 template <class Scalar>
-typename SparseMinimiser<Scalar>::Dense SparseMinimiser<Scalar>::solve(const Dense& R) const {
+typename SparseMinimiser<Scalar>::Dense SparseMinimiser<Scalar>::solve(const Dense& R, std::size_t threads) const {
   typename SparseFactor<Scalar>::Block X = R;
   if (!dense_) {
-    factor_->solve_in_place(X);
+    factor_->solve_in_place(X, threads);
     return X;
   }
   const double c = dense_->weight;
   if (!dense_->grounded) {  // z = x − y (c αᵀx) / (1 + c αᵀy)
-    factor_->solve_in_place(X);
+    factor_->solve_in_place(X, threads);
     for (Eigen::Index j = 0; j < X.cols(); ++j)
       X.col(j) -= K_inverse_alpha_ * (c * alpha_.dot(X.col(j)) / (Scalar(1) + c * alpha_K_alpha_));
     return X;
@@ -59,7 +59,7 @@ typename SparseMinimiser<Scalar>::Dense SparseMinimiser<Scalar>::solve(const Den
   const Eigen::Matrix<Scalar, 1, Eigen::Dynamic> S = X.colwise().sum();
   X -= alpha_ * (S / s);  // K z = b − α S / s
   X.row(0).setZero();     // grounded: w_0 = 0
-  factor_->solve_in_place(X);
+  factor_->solve_in_place(X, threads);
   const Eigen::Matrix<Scalar, 1, Eigen::Dynamic> delta = (S / (c * s) - alpha_.transpose() * X) / s;
   X.rowwise() += delta;  // z = w + δ 1
   return X;

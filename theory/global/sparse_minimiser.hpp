@@ -49,8 +49,9 @@ class SparseMinimiser {
   /// The numeric factorisation of K (same pattern as analysed, grounded when the dense term says so).
   /// Throws RefusedProblem when K is singular or not positive definite: the minimiser is not unique.
   void factorise(const SparseMatrix& K);
-  /// G⁻¹ R, all columns in one solve.
-  Dense solve(const Dense& R) const;
+  /// G⁻¹ R, all columns in one solve, on up to `threads` threads where the factor can
+  /// (SparseFactor::solve_in_place: the same result whatever their number).
+  Dense solve(const Dense& R, std::size_t threads = 1) const;
   const SparseFactor<Scalar>& factor() const { return *factor_; }
 
  private:
