@@ -2,8 +2,8 @@
 // substitution by them (ldl_substitution.hpp): on a matrix whose natural order is a postordered elimination
 // tree of two paths joined by a separator, the split finds the two paths, and the solve by subtrees equals the
 // plain solve to rounding and itself exactly on one thread and on two.
-#include "theory/global/ldl_substitution.hpp"
 #include "theory/global/ldl_subtrees.hpp"
+#include "theory/global/ldl_substitution.hpp"
 
 #include <gtest/gtest.h>
 
