@@ -17,18 +17,20 @@ Corners<double> corners_of(const Mesh& mesh, Eigen::Index i) {
 }
 
 std::vector<TriangleTerm> triangle_terms(const Mesh& reference, const InterpolationOptions& options) {
-  std::vector<TriangleTerm> terms;
-  terms.reserve(static_cast<std::size_t>(reference.triangle_count()));
-  for (Eigen::Index i = 0; i < reference.triangle_count(); ++i) {
-    TriangleTerm term;
-    for (int c = 0; c < 3; ++c) term.vertex[static_cast<std::size_t>(c)] = reference.triangles(c, i);
-    term.corners = corners_of(reference, i);
-    term.D = linear_part_operator(term.corners);
-    term.weight = options.area_weighted ? std::abs(reference.doubled_signed_area(i)) / 2 : 1.0;
-    if (options.energy == Energy::blend)
-      term.frobenius_share = options.blend_weights.size() > 0 ? options.blend_weights[i] : options.blend_weight;
-    terms.push_back(term);
-  }
+  std::vector<TriangleTerm> terms(static_cast<std::size_t>(reference.triangle_count()));
+  for_each_range(
+      terms.size(), ranges_for(terms.size(), triangles_per_thread), [&](std::size_t first, std::size_t last) {
+        for (std::size_t k = first; k < last; ++k) {
+          const auto i = static_cast<Eigen::Index>(k);
+          TriangleTerm& term = terms[k];
+          for (int c = 0; c < 3; ++c) term.vertex[static_cast<std::size_t>(c)] = reference.triangles(c, i);
+          term.corners = corners_of(reference, i);
+          term.D = linear_part_operator(term.corners);
+          term.weight = options.area_weighted ? std::abs(reference.doubled_signed_area(i)) / 2 : 1.0;
+          if (options.energy == Energy::blend)
+            term.frobenius_share = options.blend_weights.size() > 0 ? options.blend_weights[i] : options.blend_weight;
+        }
+      });
   return terms;
 }
 
@@ -137,11 +139,14 @@ void FrameAssembly::build_pattern() {
     return static_cast<int>(std::lower_bound(begin, end, static_cast<int>(row)) - pattern_.innerIndexPtr());
   };
   triangle_slots_.assign(9 * forward_terms_.size(), -1);
-  for (std::size_t i = 0; i < forward_terms_.size(); ++i)
-    for (std::size_t a = 0; a < 3; ++a)
-      for (std::size_t b = 0; b < 3; ++b)
-        if (const Eigen::Index row = forward_terms_[i].vertex[a], col = forward_terms_[i].vertex[b]; row >= col)
-          triangle_slots_[9 * i + 3 * a + b] = slot(row, col);
+  const std::size_t m = forward_terms_.size();
+  for_each_range(m, ranges_for(m, triangles_per_thread), [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i)
+      for (std::size_t a = 0; a < 3; ++a)
+        for (std::size_t b = 0; b < 3; ++b)
+          if (const Eigen::Index row = forward_terms_[i].vertex[a], col = forward_terms_[i].vertex[b]; row >= col)
+            triangle_slots_[9 * i + 3 * a + b] = slot(row, col);
+  });
 
   constant_values_.assign(static_cast<std::size_t>(pattern_.nonZeros()), 0.0);
   for (const ConstraintTerm& term : constraints_)

@@ -45,9 +45,6 @@ void require_valid_options(const InterpolationOptions& options, Eigen::Index tri
     throw RefusedProblem("blend weights w_i must lie in [0, 1]");
 }
 
-/// Triangles per thread below which the set-up's and a frame's loops stay on one thread.
-constexpr std::size_t triangles_per_thread = 1 << 15;
-
 std::vector<Eigen::Matrix2d> linear_parts(const Mesh& from, const Mesh& to) {
   std::vector<Eigen::Matrix2d> A(static_cast<std::size_t>(from.triangle_count()));
   for_each_range(A.size(), ranges_for(A.size(), triangles_per_thread), [&](std::size_t first, std::size_t last) {
@@ -146,16 +143,19 @@ struct Interpolation::Engine {
     auto terms = constraint_terms(options.constraints, source, target, forward);
     require_well_posed(source, terms, !has_frobenius_part(options), "E^" + to_string(options.energy));
     assembly.emplace(source, target, options, forward, reverse ? &*reverse : nullptr, std::move(terms));
+    // the symbolic analysis reads the pattern only: it runs beside the filling of H's values
     FrameAssembly::SparseMatrix H = assembly->pattern();
-    assembly->matrix_at(options.t_begin, H);
+    auto fill = [&] { assembly->matrix_at(options.t_begin, H); };
     if (assembly->isotropic()) {
-      Eigen::SparseMatrix<double> L = H.real();
+      Eigen::SparseMatrix<double> L = assembly->pattern().real();
       L.makeCompressed();
-      analyse(fixed, L);
+      side_by_side(fill, [&] { analyse(fixed, L); });
+      L = H.real();
+      L.makeCompressed();
       fixed.factorise(L);
     } else {
       SparseMinimiser<std::complex<double>> minimiser;
-      analyse(minimiser, H);
+      side_by_side(fill, [&] { analyse(minimiser, assembly->pattern()); });
       minimiser.factorise(H);
       workspaces.push_back(std::make_unique<Workspace>(std::move(H), std::move(minimiser)));
       first_workspace = workspaces.front().get();

@@ -25,6 +25,10 @@ void for_each_range(std::size_t count, std::size_t ranges, const std::function<v
     if (failure) std::rethrow_exception(failure);
 }
 
+void side_by_side(const std::function<void()>& here, const std::function<void()>& there) {
+  for_each_range(2, 2, [&](std::size_t first, std::size_t) { first == 0 ? here() : there(); });
+}
+
 std::size_t ranges_for(std::size_t count, std::size_t grain) {
   return std::clamp<std::size_t>(count / std::max<std::size_t>(1, grain), 1,
                                  std::max(1u, std::thread::hardware_concurrency()));

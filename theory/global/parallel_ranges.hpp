@@ -15,4 +15,11 @@ void for_each_range(std::size_t count, std::size_t ranges, const std::function<v
 /// `grain` items (so that small meshes stay on the caller's thread).
 std::size_t ranges_for(std::size_t count, std::size_t grain);
 
+/// Triangles per thread below which the set-up's and a frame's loops over triangles stay on one thread.
+inline constexpr std::size_t triangles_per_thread = 1 << 15;
+
+/// Runs `there` on a thread of its own while `here` runs on the caller's, and returns when both are done;
+/// rethrows the first exception (here's first).
+void side_by_side(const std::function<void()>& here, const std::function<void()>& there);
+
 }  // namespace affinterp::global
