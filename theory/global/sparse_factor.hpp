@@ -46,14 +46,16 @@ class SparseFactor {
 
 /// Unknowns (vertices) from which CHOLMOD's supernodal factor is chosen when it is built in, set from bench_scale's
 /// backend_factor and backend_solve (the man from 1k to 1M triangles; AMD EPYC, 2 cores, OpenBLAS 0.3.21 on one
-/// thread; CPU time of the one working thread, measured under a load of 4-9 on 2026-11-26):
-///  - real systems, E^F's L, factored once and solved every frame: both back-ends solve alike (CHOLMOD's factor
-///    is turned into the same kind of columns, cholmod_factor.hpp: 2.0 ms at 33k unknowns, 84-85 ms at 525k),
-///    and CHOLMOD's factorisation and that turn cost less from about 210k unknowns (132k: 197 ms against 149;
-///    525k: 1094 against 1852): 200,000;
-///  - complex systems, refactorised every frame (E^R, E^S, blends): a factorisation and a solve cost less with
-///    CHOLMOD from about 100k unknowns (33k: 37 + 6.7 ms against 25 + 3.2; 132k: 221 + 35 against 243 + 25;
-///    525k: 1755 + 166 against 3167 + 144): 100,000.
+/// thread, CHOLMOD without OpenMP teams (cholmod_factor.cpp); 2026-11-26, medians of 3):
+///  - real systems, E^F's L, factored once and solved every frame: both back-ends solve alike on one thread
+///    (CHOLMOD's factor is turned into the same kind of columns, cholmod_factor.hpp: 1.8 ms against 2.0 at 33k
+///    unknowns, 15.1 against 14.7 at 132k; CHOLMOD's alone is split for two threads, ldl_subtrees.hpp), and
+///    CHOLMOD's factorisation and that turn cost less from about 210k unknowns (132k: 202 ms against 149;
+///    525k: 1076-1181 against 1852): 200,000;
+///  - complex systems, refactorised every frame (E^R, E^S, blends): a factorisation and a solve cost about the
+///    same at 132k unknowns (246 + 35 ms against 234 + 25 on this run, 221 + 35 against 243 + 25 on one before),
+///    less with Eigen's below (33k: 34 + 5.4 against 25 + 2.3) and far less with CHOLMOD above (525k: 1470 + 168
+///    against 3167 + 144): 100,000.
 template <class Scalar>
 inline constexpr Eigen::Index cholmod_from_unknowns = std::is_same_v<Scalar, double> ? 200'000 : 100'000;
 
