@@ -1,9 +1,11 @@
 // The split of a factor's columns into two groups of subtrees (theory/global/ldl_subtrees.hpp) and the
 // substitution by them (ldl_substitution.hpp): on a matrix whose natural order is a postordered elimination
 // tree of two paths joined by a separator, the split finds the two paths, and the solve by subtrees equals the
-// plain solve to rounding and itself exactly on one thread and on two.
+// plain solve to rounding and itself exactly on one thread and on two. And the ordering that gives Eigen's
+// factor such a tree (postordered_amd.hpp): AMD's fill, split into subtrees.
 #include "theory/global/ldl_subtrees.hpp"
 #include "theory/global/ldl_substitution.hpp"
+#include "theory/global/postordered_amd.hpp"
 
 #include <gtest/gtest.h>
 
@@ -88,6 +90,27 @@ TEST(LdlSubtrees, SolveBySubtreesIsThePlainSolveOnOneThreadOrTwo) {
     const Eigen::SparseMatrix<double> full = K.selfadjointView<Eigen::Lower>();
     EXPECT_LT((Block(full * one) - B).cwiseAbs().maxCoeff(), 1e-13) << columns << " columns";
   }
+}
+
+TEST(PostorderedAmd, KeepsAmdsFillAndGivesATreeToSplit) {
+  const int side = 60;  // a grid Laplacian plus a shift
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int i = 0; i < side; ++i)
+    for (int j = 0; j < side; ++j) {
+      entries.emplace_back(i * side + j, i * side + j, 4.5);
+      if (i + 1 < side) entries.emplace_back((i + 1) * side + j, i * side + j, -1.0);
+      if (j + 1 < side) entries.emplace_back(i * side + j + 1, i * side + j, -1.0);
+    }
+  Eigen::SparseMatrix<double> K(side * side, side * side);
+  K.setFromTriplets(entries.begin(), entries.end());
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> amd(K);
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, PostorderedAmd> postordered(K);
+  ASSERT_EQ(postordered.info(), Eigen::Success);
+  const Eigen::SparseMatrix<double>& L = postordered.matrixL().nestedExpression();
+  EXPECT_EQ(L.nonZeros(), amd.matrixL().nestedExpression().nonZeros());
+  EXPECT_TRUE(split_subtrees(L.outerSize(), L.outerIndexPtr(), L.innerIndexPtr(), 0));
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(K.rows(), -1.0, 2.0);
+  EXPECT_LT((postordered.solve(b) - amd.solve(b)).cwiseAbs().maxCoeff(), 1e-12);
 }
 
 }  // namespace

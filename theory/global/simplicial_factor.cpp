@@ -10,7 +10,7 @@ namespace affinterp::global {
 
 template <class Scalar>
 SimplicialFactor<Scalar>::CopyableLDLT::CopyableLDLT(const CopyableLDLT& other)
-    : Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>() {
+    : Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, PostorderedAmd>() {
   this->m_info = other.m_info;
   this->m_factorizationIsOk = other.m_factorizationIsOk;
   this->m_analysisIsOk = other.m_analysisIsOk;
@@ -27,6 +27,7 @@ SimplicialFactor<Scalar>::CopyableLDLT::CopyableLDLT(const CopyableLDLT& other)
 template <class Scalar>
 void SimplicialFactor<Scalar>::analyse(const SparseMatrix& K) {
   ldlt_.analyzePattern(K);
+  subtrees_.reset(), split_ = false;
 }
 
 template <class Scalar>
@@ -37,16 +38,21 @@ bool SimplicialFactor<Scalar>::factorise(const SparseMatrix& K) {
     smallest = std::min(smallest, std::real(pivot)), largest = std::max(largest, std::abs(pivot));
   // a zero pivot (Eigen's NumericalIssue) fails the ratio too; info() is not read since a copy (clone()) cannot
   // set the flag it asserts
-  return smallest > 1e-12 * largest && std::isfinite(largest);
+  if (!(smallest > 1e-12 * largest && std::isfinite(largest))) return false;
+  if (!split_) {
+    const SparseMatrix& L = ldlt_.matrixL().nestedExpression();
+    subtrees_ = split_subtrees(L.outerSize(), L.outerIndexPtr(), L.innerIndexPtr(), 0), split_ = true;
+  }
+  return true;
 }
 
 template <class Scalar>
-void SimplicialFactor<Scalar>::solve_in_place(Block& X, std::size_t) const {
+void SimplicialFactor<Scalar>::solve_in_place(Block& X, std::size_t threads) const {
   const SparseMatrix& L = ldlt_.matrixL().nestedExpression();  // unit lower triangle, diagonal not stored
   Block Y = ldlt_.permutationP() * X;
-  ldl_solve_in_place(
-      LdlColumns<Scalar>{L.outerSize(), L.outerIndexPtr(), L.innerIndexPtr(), L.valuePtr(), 0, ldlt_.vectorD().data()},
-      Y, 1);
+  ldl_solve_in_place(LdlColumns<Scalar>{L.outerSize(), L.outerIndexPtr(), L.innerIndexPtr(), L.valuePtr(), 0,
+                                        ldlt_.vectorD().data(), subtrees_ ? &*subtrees_ : nullptr},
+                     Y, threads);
   X = ldlt_.permutationPinv() * Y;
 }
 
