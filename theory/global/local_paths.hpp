@@ -19,6 +19,8 @@ class LocalPaths {
  public:
   /// `A` the linear parts, `theta` their polar angles on the chosen branches (θ_i ≡ principal mod 2π).
   LocalPaths(const std::vector<Eigen::Matrix2d>& A, LocalHomotopy homotopy, const Eigen::VectorXd& theta);
+  /// No paths yet: a place, referred to by the constraint terms and the assembly, that the set-up assigns.
+  LocalPaths() = default;
 
   /// A_i(t); A_i(0) = I and A_i(1) = A_i.
   Eigen::Matrix2d at(Eigen::Index i, double t) const;
