@@ -171,14 +171,10 @@ template <class Scalar>
 void CholmodFactor<Scalar>::solve_in_place(Block& X, std::size_t threads) const {
   if constexpr (std::is_same_v<Scalar, double>) {
     if (!L_) {  // P x = L D Lᵀ Pᵀ x, perm[k] the unknown of pivot k
-      const std::vector<int>& perm = columns_.perm;
-      Block Y(X.rows(), X.cols());
-      for (Eigen::Index k = 0; k < X.rows(); ++k) Y.row(k) = X.row(perm[static_cast<std::size_t>(k)]);
-      ldl_solve_in_place(
+      ldl_solve_permuted(
           LdlColumns<double>{columns_.D.size(), columns_.start.data(), columns_.row.data(), columns_.value.data(), 0,
                              columns_.D.data(), columns_.subtrees ? &*columns_.subtrees : nullptr},
-          Y, threads);
-      for (Eigen::Index k = 0; k < X.rows(); ++k) X.row(perm[static_cast<std::size_t>(k)]) = Y.row(k);
+          columns_.perm.data(), X, threads);
       return;
     }
   }

@@ -166,4 +166,16 @@ void ldl_solve_in_place(const LdlColumns<Scalar>& L, Block& Y, std::size_t threa
     solve(std::integral_constant<int, 0>{});
 }
 
+/// X ← (P L D Lᴴ Pᵀ)⁻¹ X, perm[k] the unknown of pivot k (null: none): X's rows gathered into pivot order,
+/// solved as ldl_solve_in_place, scattered back. Row by row, where Eigen's product by a permutation took 9% of
+/// an octopus E^F frame.
+template <class Scalar, class Block>
+void ldl_solve_permuted(const LdlColumns<Scalar>& L, const int* perm, Block& X, std::size_t threads) {
+  if (!perm) return ldl_solve_in_place(L, X, threads);
+  Block Y(X.rows(), X.cols());
+  for (Eigen::Index k = 0; k < X.rows(); ++k) Y.row(k) = X.row(perm[k]);
+  ldl_solve_in_place(L, Y, threads);
+  for (Eigen::Index k = 0; k < X.rows(); ++k) X.row(perm[k]) = Y.row(k);
+}
+
 }  // namespace affinterp::global

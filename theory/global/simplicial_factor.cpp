@@ -49,11 +49,10 @@ bool SimplicialFactor<Scalar>::factorise(const SparseMatrix& K) {
 template <class Scalar>
 void SimplicialFactor<Scalar>::solve_in_place(Block& X, std::size_t threads) const {
   const SparseMatrix& L = ldlt_.matrixL().nestedExpression();  // unit lower triangle, diagonal not stored
-  Block Y = ldlt_.permutationP() * X;
-  ldl_solve_in_place(LdlColumns<Scalar>{L.outerSize(), L.outerIndexPtr(), L.innerIndexPtr(), L.valuePtr(), 0,
+  const auto& pivots = ldlt_.permutationPinv().indices();      // the unknown of each pivot
+  ldl_solve_permuted(LdlColumns<Scalar>{L.outerSize(), L.outerIndexPtr(), L.innerIndexPtr(), L.valuePtr(), 0,
                                         ldlt_.vectorD().data(), subtrees_ ? &*subtrees_ : nullptr},
-                     Y, threads);
-  X = ldlt_.permutationPinv() * Y;
+                     pivots.size() > 0 ? pivots.data() : nullptr, X, threads);
 }
 
 template <class Scalar>
