@@ -120,7 +120,7 @@ void expect_back_ends_agree() {
   for (const SparseBackEnd back_end : back_ends) {
     auto factor = make_sparse_factor<Scalar>(back_end);
     factor->analyse(K);
-    ASSERT_TRUE(factor->factorise(K));
+    ASSERT_TRUE(factor->factorise(K, 1));
     Block X = B, on_two_threads = B;
     factor->clone()->solve_in_place(X, 1);  // a clone holds the same factor
     factor->solve_in_place(on_two_threads, 2);
@@ -142,7 +142,7 @@ TEST(Scale, BackEndsRefuseASingularMatrix) {
   for (const SparseBackEnd back_end : back_ends) {
     auto factor = make_sparse_factor<double>(back_end);
     factor->analyse(K);
-    EXPECT_FALSE(factor->factorise(K)) << static_cast<int>(back_end);
+    EXPECT_FALSE(factor->factorise(K, 1)) << static_cast<int>(back_end);
   }
 }
 

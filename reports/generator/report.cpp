@@ -327,8 +327,9 @@ void write_engine_scale(std::ostringstream& md, const json& scale) {
         "triangles and the 65k pair subdivided 1-to-4 once and twice (261k, 1M), with `affinterp interpolate`'s "
         "default options; the median of three runs. Wall-clock times, the calling thread's CPU time in brackets; "
         "a batched frame is `vertices_at(times)` of 8 frames on the machine's cores, per frame; peak memory is the "
-        "process's resident high-water mark over each size's benchmarks. The sparse back-end is Eigen's simplicial "
-        "LDLᴴ below "
+        "process's resident high-water mark over each size's benchmarks. The sparse back-end is the project's "
+        "simplicial "
+        "up-looking LDLᴴ (AMD order, postordered) below "
      << fixed(switch_at("real"), 0) << " unknowns (vertices) for E^F's real system, factored once, and below "
      << fixed(switch_at("complex"), 0)
      << " for the complex systems refactorised every frame, CHOLMOD's supernodal LLᴴ from there: the switches set "

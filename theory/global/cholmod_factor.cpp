@@ -129,7 +129,7 @@ void CholmodFactor<Scalar>::analyse(const SparseMatrix& K) {
 }
 
 template <class Scalar>
-bool CholmodFactor<Scalar>::factorise(const SparseMatrix& K) {
+bool CholmodFactor<Scalar>::factorise(const SparseMatrix& K, std::size_t /*threads*/) {
   if (!L_) analyse(K);  // a real factor was turned into columns of our own below: supernodes again for this one
   cholmod_sparse A = view(K);
   const WithoutOpenMpTeams serial;

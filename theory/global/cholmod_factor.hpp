@@ -25,8 +25,9 @@ class CholmodFactor final : public SparseFactor<Scalar> {
   CholmodFactor& operator=(const CholmodFactor&) = delete;
 
   void analyse(const SparseMatrix& K) override;
-  /// Supernodal; then, for a real K, simplicial L D Lᵀ columns (a second call analyses again).
-  bool factorise(const SparseMatrix& K) override;
+  /// Supernodal, on the calling thread (its BLAS on one thread: the engine runs frames in parallel itself);
+  /// then, for a real K, simplicial L D Lᵀ columns (a second call analyses again).
+  bool factorise(const SparseMatrix& K, std::size_t threads) override;
   /// Each call uses a cholmod_common of its own, so that calls on one factor may run concurrently. A real
   /// factor's solve runs its two groups of subtrees side by side on `threads` > 1; a complex one (CHOLMOD's
   /// own solve) stays on the calling thread.

@@ -68,6 +68,11 @@ bool has_frobenius_part(const InterpolationOptions& options) {
 /// batch within 2 GB: bench_scale).
 constexpr double workspace_bytes = 1.25 * 1073741824.0;
 
+/// Unknowns per thread below which one frame's numeric factorisation stays on the caller's thread: its two
+/// groups of subtrees (simplicial_factor.hpp) cost about a millisecond at 4096, against some tens of
+/// microseconds to start a thread.
+constexpr std::size_t unknowns_per_factor_thread = 1 << 12;
+
 }  // namespace
 
 struct Interpolation::Engine {
@@ -103,10 +108,11 @@ struct Interpolation::Engine {
     xy << b.real(), b.imag();
     return fixed.solve(xy, threads).transpose();
   }
-  /// v(t) at a t in range, when H(t) changes with A_i(t): a numeric factorisation per frame in `work`.
-  Eigen::Matrix2Xd frame_in(Workspace& work, double t) const {
+  /// v(t) at a t in range, when H(t) changes with A_i(t): a numeric factorisation per frame in `work`, on up
+  /// to `threads` threads.
+  Eigen::Matrix2Xd frame_in(Workspace& work, double t, std::size_t threads) const {
     assembly->matrix_at(t, work.H);
-    work.minimiser.factorise(work.H);
+    work.minimiser.factorise(work.H, threads);
     const Eigen::VectorXcd z = work.minimiser.solve(assembly->right_hand_side_at(t));
     Eigen::Matrix2Xd v(2, z.size());
     v << z.real().transpose(), z.imag().transpose();  // z_k = v_kx + i v_ky
@@ -198,7 +204,8 @@ Eigen::Matrix2Xd Interpolation::vertices_at(double t) const {
         t, ranges_for(static_cast<std::size_t>(engine.assembly->pattern().rows()), triangles_per_thread / 2));
   Engine::Workspace& work = *engine.first_workspace;
   const std::lock_guard lock(work.mutex);
-  return engine.frame_in(work, t);
+  return engine.frame_in(
+      work, t, ranges_for(static_cast<std::size_t>(engine.assembly->pattern().rows()), unknowns_per_factor_thread));
 }
 
 std::vector<Eigen::Matrix2Xd> Interpolation::vertices_at(const std::vector<double>& times) const {
@@ -225,7 +232,7 @@ std::vector<Eigen::Matrix2Xd> Interpolation::vertices_at(const std::vector<doubl
       std::unique_lock<std::mutex> lock;
       if (!isotropic) lock = std::unique_lock(workspaces[w]->mutex);
       for (std::size_t k; (k = next++) < times.size();)
-        frames[k] = isotropic ? engine.isotropic_frame(times[k], 1) : engine.frame_in(*workspaces[w], times[k]);
+        frames[k] = isotropic ? engine.isotropic_frame(times[k], 1) : engine.frame_in(*workspaces[w], times[k], 1);
     } catch (...) {
       const std::lock_guard lock(failure_mutex);
       if (!failure) failure = std::current_exception();

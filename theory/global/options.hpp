@@ -76,7 +76,7 @@ struct Constraints {
 
 /// The sparse Cholesky back-end (sparse_factor.hpp).
 enum class SparseBackEnd {
-  simplicial,  ///< Eigen's SimplicialLDLT
+  simplicial,  ///< our up-looking LDLᴴ (simplicial_factor.hpp)
   cholmod,     ///< CHOLMOD's supernodal LLᴴ (when built in)
 };
 

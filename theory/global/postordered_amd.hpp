@@ -1,9 +1,9 @@
 #pragma once
-// An ordering for Eigen's simplicial factorisations: Eigen's approximate minimum degree (AMD) followed by a
-// postorder of the permuted matrix's elimination tree (Liu, "The role of elimination trees in sparse
+// The ordering of the simplicial factor (ldl_symbolic.hpp): Eigen's approximate minimum degree (AMD) followed
+// by a postorder of the permuted matrix's elimination tree (Liu, "The role of elimination trees in sparse
 // factorization", SIMAX 1990, §3-4). A postorder is an equivalent ordering — the same fill and the same
-// operations — in which every subtree is a range of columns, so that the factor's solve splits into two
-// groups of subtrees for two threads (ldl_subtrees.hpp), as CHOLMOD's postordered factor does.
+// operations — in which every subtree is a range of columns, so that the factor's rows and its solve split
+// into two groups of subtrees for two threads (ldl_subtrees.hpp), as CHOLMOD's postordered factor does.
 #include <Eigen/OrderingMethods>
 #include <Eigen/SparseCore>
 

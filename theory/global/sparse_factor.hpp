@@ -2,8 +2,8 @@
 // A sparse LDLᴴ (or LLᴴ) factorisation of a Hermitian positive definite K (real symmetric, or complex
 // Hermitian for the complex form of hermitian_form.hpp), behind one interface so that the minimiser does
 // not know which back-end it holds:
-//   - Eigen's SimplicialLDLT (always available): the faster one to factorise on small meshes, where the
-//     supernodes stay too small for BLAS-3 kernels to pay;
+//   - our simplicial up-looking LDLᴴ (simplicial_factor.hpp, always available): the faster one to factorise on
+//     small meshes, where the supernodes stay too small for BLAS-3 kernels to pay;
 //   - CHOLMOD's supernodal Cholesky (SuiteSparse; built in when CMake finds it, AFFINTERP_HAS_CHOLMOD), on
 //     an optimised BLAS (experiments/setup.sh installs OpenBLAS) 1.7-1.8x faster to factorise at 1M
 //     triangles (cholmod_from_unknowns).
@@ -31,9 +31,10 @@ class SparseFactor {
   virtual ~SparseFactor() = default;
   /// The symbolic analysis of K's pattern (its lower triangle is read).
   virtual void analyse(const SparseMatrix& K) = 0;
-  /// The numeric factorisation of K (same pattern as analysed). False when K is not numerically positive
-  /// definite: a pivot not above 10⁻¹² times the largest (a ratio, so whatever the mesh's units or size).
-  virtual bool factorise(const SparseMatrix& K) = 0;
+  /// The numeric factorisation of K (same pattern as analysed), on up to `threads` threads where the back-end
+  /// can (the same factor whatever their number). False when K is not numerically positive definite: a pivot
+  /// not above 10⁻¹² times the largest (a ratio, so whatever the mesh's units or size).
+  virtual bool factorise(const SparseMatrix& K, std::size_t threads) = 0;
   /// X ← K⁻¹ X, on up to `threads` threads where the back-end can (the same X whatever their number). Safe
   /// to call from several threads at once on one factor.
   virtual void solve_in_place(Block& X, std::size_t threads) const = 0;

@@ -29,8 +29,8 @@ void SparseMinimiser<Scalar>::analyse(const SparseMatrix& K, std::optional<Dense
 }
 
 template <class Scalar>
-void SparseMinimiser<Scalar>::factorise(const SparseMatrix& K) {
-  if (!factor_->factorise(K))
+void SparseMinimiser<Scalar>::factorise(const SparseMatrix& K, std::size_t threads) {
+  if (!factor_->factorise(K, threads))
     throw RefusedProblem(
         "the quadratic form G of the global error plus constraints is singular, so the minimiser is not unique "
         "(is the mesh in one connected piece, with every vertex in a triangle?)");

@@ -46,9 +46,10 @@ class SparseMinimiser {
   void analyse(const SparseMatrix& K, std::optional<DenseTerm> dense);
   /// The same on the named back-end (benchmarks).
   void analyse(const SparseMatrix& K, std::optional<DenseTerm> dense, SparseBackEnd back_end);
-  /// The numeric factorisation of K (same pattern as analysed, grounded when the dense term says so).
-  /// Throws RefusedProblem when K is singular or not positive definite: the minimiser is not unique.
-  void factorise(const SparseMatrix& K);
+  /// The numeric factorisation of K (same pattern as analysed, grounded when the dense term says so), on up
+  /// to `threads` threads where the factor can (SparseFactor::factorise: the same factor whatever their
+  /// number). Throws RefusedProblem when K is singular or not positive definite: the minimiser is not unique.
+  void factorise(const SparseMatrix& K, std::size_t threads = 1);
   /// G⁻¹ R, all columns in one solve, on up to `threads` threads where the factor can
   /// (SparseFactor::solve_in_place: the same result whatever their number).
   Dense solve(const Dense& R, std::size_t threads = 1) const;

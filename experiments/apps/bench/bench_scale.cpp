@@ -141,7 +141,7 @@ void backend_factor(benchmark::State& state, int level, global::SparseBackEnd ba
     state.PauseTiming();
     factor->analyse(K);  // afresh: CHOLMOD turns a real factor into columns of its own (cholmod_factor.hpp)
     state.ResumeTiming();
-    benchmark::DoNotOptimize(factor->factorise(K));
+    benchmark::DoNotOptimize(factor->factorise(K, 1));
   }
   state.counters["unknowns"] = static_cast<double>(K.rows());
   state.counters["factor_MB"] = factor->factor_bytes() / 1e6;
@@ -154,7 +154,7 @@ void backend_solve(benchmark::State& state, int level, global::SparseBackEnd bac
   const Eigen::SparseMatrix<Scalar> K = frame_matrix<Scalar>(level);
   const auto factor = global::make_sparse_factor<Scalar>(back_end);
   factor->analyse(K);
-  if (!factor->factorise(K)) state.SkipWithError("not positive definite");
+  if (!factor->factorise(K, 1)) state.SkipWithError("not positive definite");
   using Block = typename global::SparseFactor<Scalar>::Block;
   const Block B = Block::Ones(K.rows(), std::is_same_v<Scalar, double> ? 2 : 1);
   for (auto _ : state) {
