@@ -118,6 +118,10 @@ struct Interpolation::Engine {
     v << z.real().transpose(), z.imag().transpose();  // z_k = v_kx + i v_ky
     return v;
   }
+  /// The threads worth one numeric factorisation.
+  std::size_t factor_threads() const {
+    return ranges_for(static_cast<std::size_t>(assembly->pattern().rows()), unknowns_per_factor_thread);
+  }
   /// The first `count` workspaces, the missing ones made as copies of the first.
   std::vector<Workspace*> reserve_workspaces(std::size_t count) const {
     const std::lock_guard lock(workspaces_mutex);
@@ -175,11 +179,11 @@ struct Interpolation::Engine {
       side_by_side(fill, [&] { analyse(fixed, L); });
       L = H.real();
       L.makeCompressed();
-      fixed.factorise(L);
+      fixed.factorise(L, factor_threads());
     } else {
       SparseMinimiser<std::complex<double>> minimiser;
       side_by_side(fill, [&] { analyse(minimiser, assembly->pattern()); });
-      minimiser.factorise(H);
+      minimiser.factorise(H, factor_threads());
       workspaces.push_back(std::make_unique<Workspace>(std::move(H), std::move(minimiser)));
       first_workspace = workspaces.front().get();
     }
@@ -204,8 +208,7 @@ Eigen::Matrix2Xd Interpolation::vertices_at(double t) const {
         t, ranges_for(static_cast<std::size_t>(engine.assembly->pattern().rows()), triangles_per_thread / 2));
   Engine::Workspace& work = *engine.first_workspace;
   const std::lock_guard lock(work.mutex);
-  return engine.frame_in(
-      work, t, ranges_for(static_cast<std::size_t>(engine.assembly->pattern().rows()), unknowns_per_factor_thread));
+  return engine.frame_in(work, t, engine.factor_threads());
 }
 
 std::vector<Eigen::Matrix2Xd> Interpolation::vertices_at(const std::vector<double>& times) const {

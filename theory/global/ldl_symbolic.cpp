@@ -5,7 +5,9 @@
 #include <Eigen/SparseCore>
 
 #include <algorithm>
+#include <array>
 #include <numeric>
+#include <type_traits>
 
 namespace affinterp::global {
 namespace {
@@ -29,6 +31,46 @@ std::vector<int> amd_pivots(Eigen::Index n, const int* start, const int* row) {
   else
     std::iota(pivots.begin(), pivots.end(), 0);
   return pivots;
+}
+
+/// Each top row's entries of A and pattern ordered by group, group 0's, group 1's, the top's, each kept in its
+/// order (LdlSymbolic::TopRow).
+void order_top_rows(LdlSymbolic& s) {
+  const LdlSubtrees& split = *s.subtrees;
+  std::vector<int> group(static_cast<std::size_t>(s.n), 2);  // 2: the top
+  for (int g = 0; g < 2; ++g)
+    for (const auto& [first, root] : split.ranges[static_cast<std::size_t>(g)])
+      std::fill(group.begin() + first, group.begin() + root + 1, g);
+  // stably by the group of each entry's column, returning where groups 0 and 1 end
+  auto order = [&](int begin, int end, const std::vector<int>& column, auto&&... parallel) {
+    std::vector<int> entries(static_cast<std::size_t>(end - begin));
+    std::iota(entries.begin(), entries.end(), begin);
+    std::stable_sort(entries.begin(), entries.end(), [&](int a, int b) {
+      return group[static_cast<std::size_t>(column[static_cast<std::size_t>(a)])] <
+             group[static_cast<std::size_t>(column[static_cast<std::size_t>(b)])];
+    });
+    auto permute = [&](auto& values) {  // the row's entries only: a copy of the whole array per row is quadratic
+      const std::vector<typename std::decay_t<decltype(values)>::value_type> row(values.begin() + begin,
+                                                                                 values.begin() + end);
+      for (std::size_t e = 0; e < entries.size(); ++e)
+        values[static_cast<std::size_t>(begin) + e] = row[static_cast<std::size_t>(entries[e] - begin)];
+    };
+    (permute(parallel), ...);
+    std::array<int, 2> ends{begin, begin};
+    for (int e = begin; e < end; ++e)
+      for (int g = 0; g < 2; ++g)
+        if (group[static_cast<std::size_t>(column[static_cast<std::size_t>(e)])] <= g)
+          ends[static_cast<std::size_t>(g)] = e + 1;
+    return ends;
+  };
+  for (const int k : split.top) {
+    const auto row = static_cast<std::size_t>(k);
+    const std::array<int, 2> a_end =
+        order(s.a_start[row], s.a_start[row + 1], s.a_column, s.a_source, s.a_conjugated, s.a_column);
+    const std::array<int, 2> r_end = order(s.r_start[row], s.r_start[row + 1], s.r_column, s.r_slot, s.r_column);
+    s.top_rows.push_back({{a_end[0], a_end[1]}, {r_end[0], r_end[1]}, static_cast<int>(s.partial_size)});
+    s.partial_size += static_cast<std::size_t>(s.r_start[row + 1] - r_end[1]) + 1;
+  }
 }
 
 }  // namespace
@@ -92,6 +134,7 @@ LdlSymbolic ldl_symbolic(Eigen::Index n, const int* start, const int* row) {
       s.l_row[static_cast<std::size_t>(slot)] = k, s.r_slot[static_cast<std::size_t>(q)] = slot;
     }
   s.subtrees = split_subtrees(n, s.l_start.data(), s.l_row.data(), 0);
+  if (s.subtrees) order_top_rows(s);
   return s;
 }
 

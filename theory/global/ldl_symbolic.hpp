@@ -31,6 +31,19 @@ struct LdlSymbolic {
   /// L's columns in two groups of subtrees (ldl_subtrees.hpp), whose rows factorise side by side; empty when
   /// the tree has no split worth two threads.
   std::optional<LdlSubtrees> subtrees;
+  /// With a split, each top row's entries in A and its pattern ordered by their columns' group: group 0's,
+  /// group 1's, then the top's (an order that still puts columns before their ancestors: a group's columns have
+  /// no ancestor in the other group and no descendant in the top). A group's part of a top row reaches only
+  /// that group's columns and the top's rows, so both groups work through the top rows side by side, leaving
+  /// sums for the top's columns and D's share (`partial`: their offset, per group, in a buffer of
+  /// `partial_size`), and the top's part of each row follows.
+  struct TopRow {
+    int a_end[2];  ///< where group g's entries of A's row end (group 0's begin at a_start[k])
+    int r_end[2];  ///< where group g's columns of the pattern end (group 0's begin at r_start[k])
+    int partial;   ///< offset of the row's sums: one per top column of its pattern, then D's share
+  };
+  std::vector<TopRow> top_rows;  ///< per top row, in the order of LdlSubtrees::top
+  std::size_t partial_size = 0;
 };
 
 /// The symbolic factorisation of K's pattern, its lower triangle read from compressed columns (n columns,

@@ -29,14 +29,23 @@ class SimplicialFactor final : public SparseFactor<Scalar> {
   double factor_bytes() const override;
 
  private:
-  /// Rows `rows` of L and D from A = P K Pᵀ, K's values `k_value`; y is zero on entry and on return.
+  // Of A = P K Pᵀ, K's values `k_value`; a dense row y is zero before and after each row.
+  /// Adds A's entries [first, last) of a row (LdlSymbolic::a_start) into y.
+  void scatter(const Scalar* k_value, int first, int last, Scalar* y) const;
+  /// L(k, i) for the pattern's entries [first, last) of row k (LdlSymbolic::r_start), their shares taken from d_k.
+  void eliminate(int first, int last, Scalar* y, double& d_k);
+  /// Rows `rows` of L and D.
   template <class Rows>
-  void factorise_rows(const Scalar* k_value, const Rows& rows, std::vector<Scalar>& y);
+  void factorise_rows(const Scalar* k_value, const Rows& rows, Scalar* y);
+  /// Group g's part of every top row, its sums left in partial_[g] (LdlSymbolic::TopRow).
+  void factorise_top_rows_in_group(const Scalar* k_value, std::size_t g);
+  /// The top's part of every top row, after both groups'.
+  void factorise_top_rows(const Scalar* k_value);
 
   std::shared_ptr<const LdlSymbolic> symbolic_;  ///< shared by the clones, which factorise other frames
   std::vector<Scalar> l_value_, d_;              ///< L's values in the slots of symbolic_->l_row; D
-  /// A dense row per group of subtrees, zero between rows (Davis's y in §4.7)
-  std::vector<Scalar> y_[2];
+  /// Per group of subtrees, a dense row (Davis's y in §4.7) and the sums its part of the top rows leaves
+  std::vector<Scalar> y_[2], partial_[2];
 };
 
 extern template class SimplicialFactor<double>;

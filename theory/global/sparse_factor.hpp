@@ -46,19 +46,20 @@ class SparseFactor {
 };
 
 /// Unknowns (vertices) from which CHOLMOD's supernodal factor is chosen when it is built in, set from bench_scale's
-/// backend_factor and backend_solve (the man from 1k to 1M triangles; AMD EPYC, 2 cores, OpenBLAS 0.3.21 on one
-/// thread, CHOLMOD without OpenMP teams (cholmod_factor.cpp); 2026-11-26, medians of 3):
-///  - real systems, E^F's L, factored once and solved every frame: both back-ends solve alike on one thread
-///    (CHOLMOD's factor is turned into the same kind of columns, cholmod_factor.hpp: 1.8 ms against 2.0 at 33k
-///    unknowns, 15.1 against 14.7 at 132k; CHOLMOD's alone is split for two threads, ldl_subtrees.hpp), and
-///    CHOLMOD's factorisation and that turn cost less from about 210k unknowns (132k: 202 ms against 149;
-///    525k: 1076-1181 against 1852): 200,000;
-///  - complex systems, refactorised every frame (E^R, E^S, blends): a factorisation and a solve cost about the
-///    same at 132k unknowns (246 + 35 ms against 234 + 25 on this run, 221 + 35 against 243 + 25 on one before),
-///    less with Eigen's below (33k: 34 + 5.4 against 25 + 2.3) and far less with CHOLMOD above (525k: 1470 + 168
-///    against 3167 + 144): 100,000.
+/// backend_factor and backend_solve on one thread (the man at 261k and 1M triangles, 132k and 525k unknowns; AMD
+/// EPYC, 2 cores, OpenBLAS 0.3.21 on one thread, CHOLMOD without OpenMP teams (cholmod_factor.cpp); 2026-11-26
+/// c. 20:00, medians of 3), where the ratio of the simplicial back-end's cost to CHOLMOD's, taken as a power of
+/// the size between the two, crosses 1 (the simplicial factor also splits one frame's rows over two threads,
+/// which this leaves out):
+///  - real systems, E^F's L, factored once and solved every frame: both solve alike (CHOLMOD's factor is turned
+///    into the same kind of columns, cholmod_factor.hpp: 17.0 ms against 16.8 at 132k, 91.5 against 92.8 at
+///    525k); the factorisation 135 against 215 ms at 132k, 1632 against 1166 at 525k: ratio 0.63 and 1.40,
+///    crossing at about 290k: 300,000;
+///  - complex systems, refactorised every frame (E^R, E^S, blends): a factorisation and a solve 222 + 27 against
+///    249 + 37 ms at 132k, 2959 + 143 against 1422 + 167 at 525k: ratio 0.87 and 1.95, crossing at about
+///    170k: 170,000.
 template <class Scalar>
-inline constexpr Eigen::Index cholmod_from_unknowns = std::is_same_v<Scalar, double> ? 200'000 : 100'000;
+inline constexpr Eigen::Index cholmod_from_unknowns = std::is_same_v<Scalar, double> ? 300'000 : 170'000;
 
 /// Whether this build has the CHOLMOD back-end.
 bool has_cholmod();
