@@ -171,6 +171,9 @@ nlohmann::json target_verdicts(const nlohmann::json& rows, std::size_t r, const 
     growth_cause += ", and the batch's gain over single frames went from " +
                     times(rows[r - 1]["frame_R_ms"].get<double>() / rows[r - 1]["batch_R_ms"].get<double>()) + " to " +
                     times(batch_gain);
+  if (global::has_cholmod())
+    growth_cause += "; below " + std::to_string(global::cholmod_from_unknowns<std::complex<double>>) +
+                    " unknowns the complex systems factorise on the simplicial LDLᴴ instead (sparse_factor.hpp)";
   add("E^R batched frame's growth from the size before", growth_R, growth_R_target, growth_cause);
   add("peak memory (MB)", row["peak_MB"], peak_target_MB, "the factors and the frames' workspaces");
   return verdicts;

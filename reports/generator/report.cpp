@@ -374,9 +374,9 @@ void write_engine_scale(std::ostringstream& md, const json& scale) {
      << fixed(p.value("batch_R_ms", json()), 2) << " | " << fixed(p.value("peak_MB", json()), 2) << " |\n\n";
   if (!scale.value("back_ends", json::array()).empty()) {
     md << "Each back-end on the same matrices (`backend_*`: E^F's real L with two right-hand sides, E^R's complex "
-          "H(½) with one), CPU ms of the calling thread (a factorisation or solve runs on it alone; the set-up's and "
-          "an "
-          "E^F frame's loops use the second core too on large meshes, not counted here):\n\n| back-end | triangles | "
+          "H(½) with one), CPU ms of the calling thread (a `backend_factor` or `backend_solve` runs on it "
+          "alone; set-up and frames use the second core too, not counted here: the loops over triangles on large "
+          "meshes, the simplicial factor's two groups of subtrees):\n\n| back-end | triangles | "
           "factor E^F | factor E^R | "
           "solve E^F | solve E^R | set-up E^F | set-up E^R | frame E^F | frame E^R |\n"
           "|---|---|---|---|---|---|---|---|---|---|\n";
