@@ -6,7 +6,6 @@
 // columns are split into two groups of subtrees (ldl_subtrees.hpp), the groups' substitutions run side by
 // side.
 #include "theory/global/ldl_subtrees.hpp"
-#include "theory/global/parallel_ranges.hpp"
 
 #include <Eigen/Core>
 
@@ -124,12 +123,7 @@ void ldl_substitute_by_subtrees(const LdlColumns<Scalar>& L, Block& Y, std::size
   Scalar* y = Y.data();
   const Eigen::Index m = Y.cols();
   std::array<std::vector<Scalar>, 2> top_sum;
-  auto each_group = [&](auto&& step) {
-    for_each_range(2, threads > 1 ? 2 : 1, [&](std::size_t first, std::size_t last) {
-      for (std::size_t g = first; g < last; ++g) step(g);
-    });
-  };
-  each_group([&](std::size_t g) {
+  for_each_group(threads, [&](std::size_t g) {
     top_sum[g].assign(split.top.size() * static_cast<std::size_t>(m), Scalar(0));
     for (const auto& [first, root] : split.ranges[g])
       forward_in_subtree<columns>(L, y, m, up(first, root), root, top_sum[g].data(), split.top_index.data());
@@ -141,7 +135,7 @@ void ldl_substitute_by_subtrees(const LdlColumns<Scalar>& L, Block& Y, std::size
   forward<columns>(L, y, m, split.top);
   diagonal(L, y, m);
   backward<columns>(L, y, m, split.top | std::views::reverse);
-  each_group([&](std::size_t g) {
+  for_each_group(threads, [&](std::size_t g) {
     for (const auto& [first, root] : split.ranges[g] | std::views::reverse)
       backward<columns>(L, y, m, down(first, root));
   });

@@ -1,5 +1,7 @@
 #include "theory/global/ldl_subtrees.hpp"
 
+#include "theory/global/parallel_ranges.hpp"
+
 #include <algorithm>
 
 namespace affinterp::global {
@@ -93,6 +95,12 @@ std::optional<LdlSubtrees> split_subtrees(Eigen::Index n, const int* start, cons
     for (int s = start[j] + skip; s < start[j + 1]; ++s)
       if (split.top_index[static_cast<std::size_t>(row[s])] < 0) return std::nullopt;
   return split;
+}
+
+void for_each_group(std::size_t threads, const std::function<void(std::size_t)>& step) {
+  for_each_range(2, threads > 1 ? 2 : 1, [&](std::size_t first, std::size_t last) {
+    for (std::size_t g = first; g < last; ++g) step(g);
+  });
 }
 
 }  // namespace affinterp::global

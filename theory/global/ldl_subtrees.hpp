@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -31,5 +32,8 @@ struct LdlSubtrees {
 /// the smallest row of each column is its parent. Empty when the tree is not postordered, or when no split
 /// leaves the larger group with its top below 0.75 of the work.
 std::optional<LdlSubtrees> split_subtrees(Eigen::Index n, const int* start, const int* row, int skip);
+
+/// step(0) and step(1), the two groups' work, side by side when `threads` > 1, else one after the other.
+void for_each_group(std::size_t threads, const std::function<void(std::size_t)>& step);
 
 }  // namespace affinterp::global

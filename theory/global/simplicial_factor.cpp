@@ -1,7 +1,6 @@
 #include "theory/global/simplicial_factor.hpp"
 
 #include "theory/global/ldl_substitution.hpp"
-#include "theory/global/parallel_ranges.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,11 +8,24 @@
 #include <ranges>
 
 namespace affinterp::global {
+namespace {
+
+/// K itself when compressed (the symbolic part's a_source indexes its value array), else a compressed copy in
+/// `storage`.
+template <class SparseMatrix>
+const SparseMatrix& compressed(const SparseMatrix& K, SparseMatrix& storage) {
+  if (K.isCompressed()) return K;
+  storage = K;
+  storage.makeCompressed();
+  return storage;
+}
+
+}  // namespace
 
 template <class Scalar>
 void SimplicialFactor<Scalar>::analyse(const SparseMatrix& K) {
-  SparseMatrix compressed;
-  const SparseMatrix& C = K.isCompressed() ? K : (compressed = K, compressed.makeCompressed(), compressed);
+  SparseMatrix storage;
+  const SparseMatrix& C = compressed(K, storage);
   symbolic_ = std::make_shared<const LdlSymbolic>(ldl_symbolic(C.cols(), C.outerIndexPtr(), C.innerIndexPtr()));
   l_value_.assign(symbolic_->l_row.size(), Scalar(0));
   d_.assign(static_cast<std::size_t>(C.cols()), Scalar(0));
@@ -108,19 +120,17 @@ void SimplicialFactor<Scalar>::factorise_top_rows(const Scalar* k_value) {
 
 template <class Scalar>
 bool SimplicialFactor<Scalar>::factorise(const SparseMatrix& K, std::size_t threads) {
-  SparseMatrix compressed;
-  const SparseMatrix& C = K.isCompressed() ? K : (compressed = K, compressed.makeCompressed(), compressed);
+  SparseMatrix storage;
+  const SparseMatrix& C = compressed(K, storage);
   const LdlSymbolic& s = *symbolic_;
   const Scalar* k_value = C.valuePtr();
   if (s.subtrees) {
     // a group's rows reach only its own columns, and its part of a top row only its own columns and the top's
     // rows; the top's part of each row comes after both groups'
-    for_each_range(2, threads > 1 ? 2 : 1, [&](std::size_t first, std::size_t last) {
-      for (std::size_t g = first; g < last; ++g) {
-        for (const auto& [column, root] : s.subtrees->ranges[g])
-          factorise_rows(k_value, std::views::iota(column, root + 1), y_[g].data());
-        factorise_top_rows_in_group(k_value, g);
-      }
+    for_each_group(threads, [&](std::size_t g) {
+      for (const auto& [column, root] : s.subtrees->ranges[g])
+        factorise_rows(k_value, std::views::iota(column, root + 1), y_[g].data());
+      factorise_top_rows_in_group(k_value, g);
     });
     factorise_top_rows(k_value);
   } else {
