@@ -68,11 +68,6 @@ bool has_frobenius_part(const InterpolationOptions& options) {
 /// batch within 2 GB: bench_scale).
 constexpr double workspace_bytes = 1.25 * 1073741824.0;
 
-/// Unknowns per thread below which one frame's numeric factorisation stays on the caller's thread: its two
-/// groups of subtrees (simplicial_factor.hpp) cost about a millisecond at 4096, against some tens of
-/// microseconds to start a thread.
-constexpr std::size_t unknowns_per_factor_thread = 1 << 12;
-
 }  // namespace
 
 struct Interpolation::Engine {
@@ -108,20 +103,18 @@ struct Interpolation::Engine {
     xy << b.real(), b.imag();
     return fixed.solve(xy, threads).transpose();
   }
-  /// v(t) at a t in range, when H(t) changes with A_i(t): a numeric factorisation per frame in `work`, on up
-  /// to `threads` threads.
+  /// v(t) at a t in range, when H(t) changes with A_i(t): a numeric factorisation per frame in `work`, it and
+  /// the solve on up to `threads` threads.
   Eigen::Matrix2Xd frame_in(Workspace& work, double t, std::size_t threads) const {
     assembly->matrix_at(t, work.H);
     work.minimiser.factorise(work.H, threads);
-    const Eigen::VectorXcd z = work.minimiser.solve(assembly->right_hand_side_at(t));
+    const Eigen::VectorXcd z = work.minimiser.solve(assembly->right_hand_side_at(t, threads), threads);
     Eigen::Matrix2Xd v(2, z.size());
     v << z.real().transpose(), z.imag().transpose();  // z_k = v_kx + i v_ky
     return v;
   }
-  /// The threads worth one numeric factorisation.
-  std::size_t factor_threads() const {
-    return ranges_for(static_cast<std::size_t>(assembly->pattern().rows()), unknowns_per_factor_thread);
-  }
+  /// The threads worth one frame (parallel_ranges.hpp).
+  std::size_t threads_per_frame() const { return frame_threads(static_cast<std::size_t>(assembly->pattern().rows())); }
   /// The first `count` workspaces, the missing ones made as copies of the first.
   std::vector<Workspace*> reserve_workspaces(std::size_t count) const {
     const std::lock_guard lock(workspaces_mutex);
@@ -179,11 +172,11 @@ struct Interpolation::Engine {
       side_by_side(fill, [&] { analyse(fixed, L); });
       L = H.real();
       L.makeCompressed();
-      fixed.factorise(L, factor_threads());
+      fixed.factorise(L, threads_per_frame());
     } else {
       SparseMinimiser<std::complex<double>> minimiser;
       side_by_side(fill, [&] { analyse(minimiser, assembly->pattern()); });
-      minimiser.factorise(H, factor_threads());
+      minimiser.factorise(H, threads_per_frame());
       workspaces.push_back(std::make_unique<Workspace>(std::move(H), std::move(minimiser)));
       first_workspace = workspaces.front().get();
     }
@@ -208,7 +201,7 @@ Eigen::Matrix2Xd Interpolation::vertices_at(double t) const {
         t, ranges_for(static_cast<std::size_t>(engine.assembly->pattern().rows()), triangles_per_thread / 2));
   Engine::Workspace& work = *engine.first_workspace;
   const std::lock_guard lock(work.mutex);
-  return engine.frame_in(work, t, engine.factor_threads());
+  return engine.frame_in(work, t, engine.threads_per_frame());
 }
 
 std::vector<Eigen::Matrix2Xd> Interpolation::vertices_at(const std::vector<double>& times) const {
