@@ -26,6 +26,21 @@ std::optional<double> raised_frames_per_second_target(const std::string& energy)
   return std::nullopt;
 }
 
+/// Where a frame's time goes, from the run's frame_assembly, frame_factor and frame_solve rows (bench_interp:
+/// E^R's parts as vertices_at(t) runs them), when it has them.
+nlohmann::json frame_parts(const BenchResults& times, const std::optional<BenchResults>& threads,
+                           const std::string& rest, double frame_ms) {
+  const std::optional<double> assembly = times["frame_assembly/" + rest], factor = times["frame_factor/" + rest],
+                              solve = times["frame_solve/" + rest];
+  if (!assembly || !factor || !solve) return nullptr;
+  const std::optional<double> factor_threads = threads ? (*threads)["frame_factor/" + rest] : std::nullopt;
+  return {{"assembly_ms", *assembly},
+          {"factor_ms", *factor},
+          {"solve_ms", *solve},
+          {"threads", optional_number(factor_threads)},
+          {"rest_ms", frame_ms - *assembly - *factor - *solve}};
+}
+
 double identity(double x) { return x; }
 double per_second(double ms) { return 1000.0 / ms; }
 /// bench_interp's batch_frames: 8 frames per iteration (engine_bench.hpp).
@@ -45,6 +60,7 @@ nlohmann::json engine_speed(const std::filesystem::path& bench_file) {
   const std::optional<BenchResults> times = bench::read_bench_results(bench_file, "real_time");
   if (!times) return nullptr;
   const std::optional<BenchResults> sizes = bench::read_bench_results(bench_file, "triangles");
+  const std::optional<BenchResults> threads = bench::read_bench_results(bench_file, "threads");
   nlohmann::json table{{"file", bench_file.filename().string()},
                        {"machine", times->machine},
                        {"compiler", times->compiler},
@@ -89,6 +105,7 @@ nlohmann::json engine_speed(const std::filesystem::path& bench_file) {
         {"raised_target_frames_per_s", optional_number(raised)},
         {"raised_verdict", raised_verdict(frames_per_s)},
         {"raised_verdict_batched", raised_verdict(batched)},
+        {"frame_parts", frame_parts(*times, threads, rest, frame_ms)},
     });
   }
   return table;

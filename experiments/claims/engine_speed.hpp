@@ -2,7 +2,7 @@
 // The global engine's speed table for the report, from one run of build/bin/bench_interp (Kaji Appendix,
 // "Efficiency"): per energy the set-up time, the time per frame after set-up and, where measured, the
 // refactor-every-frame baseline of the same run, against the targets of the engine's specification —
-// E^F ≥ 150 frames/s, E^R ≥ 25 frames/s, set-up ≤ 0.2 s, all single-threaded.
+// E^F ≥ 150 frames/s, E^R ≥ 25 frames/s, set-up ≤ 0.2 s, one frame at a time.
 #include "experiments/bench/history.hpp"
 
 #include <nlohmann/json.hpp>
@@ -17,7 +17,9 @@ namespace affinterp::claims {
 /// "repetitions", "baseline_ms" (null: not measured), "speedup_vs_baseline", "verdict", "batched_frames_per_s" and
 /// its "…_ci95" (8 frames a call to vertices_at(times) on the machine's cores; null: not measured), issue 19's
 /// "raised_target_frames_per_s" (E^F 300, E^R 60) and its "raised_verdict" one frame at a time and
-/// "raised_verdict_batched"}]}; null when
+/// "raised_verdict_batched", and "frame_parts" (null: not measured): where one frame's time goes, the medians of
+/// bench_interp's frame_assembly, frame_factor and frame_solve, {"assembly_ms", "factor_ms", "solve_ms", "threads"
+/// (the factorisation's), "rest_ms" (the frame's median less the three)}}]}; null when
 /// `bench_file` does not exist. The medians' 95% bootstrap intervals (measured.hpp; null with fewer than 10
 /// repetitions) decide each row as the speed claims are decided: "reproduced" (targets met) when every
 /// interval lies within its target, "not-reproduced" when one lies outside, else "inconclusive".

@@ -252,6 +252,15 @@ std::string met_cell(const json& verdict) {
   return v == "reproduced" ? "yes" : v == "not-reproduced" ? "**no**" : "undecided";
 }
 
+/// Where one frame's time goes (engine_speed.hpp's frame_parts: bench_interp's frame_assembly, frame_factor and
+/// frame_solve medians), or — without those rows.
+std::string frame_parts_cell(const json& parts) {
+  if (!parts.is_object()) return "—";
+  return "numeric factorisation " + fixed(parts["factor_ms"], 1) + " ms (" + fixed(parts["threads"], 0) +
+         " threads), assembly of H(t) " + fixed(parts["assembly_ms"], 1) + " ms (one thread), solve " +
+         fixed(parts["solve_ms"], 1) + " ms; the rest " + fixed(parts["rest_ms"], 1) + " ms";
+}
+
 /// The global engine's speed against its targets (bench_interp, one run on one machine).
 void write_engine_speed(std::ostringstream& md, const json& speed) {
   md << "## Global engine speed\n\n";
@@ -261,7 +270,9 @@ void write_engine_speed(std::ostringstream& md, const json& speed) {
   }
   md << "The latest run: `build/bin/bench_interp` on " << speed.value("mesh", "?") << " ("
      << fixed(speed.value("triangles", json()), 0)
-     << " triangles), single-threaded, the median of ten repetitions of at least a second each in each of the run's "
+     << " triangles), one frame at a time (each on the engine's own threads: from 8192 unknowns a frame's numeric "
+        "factorisation and solve run their two groups of subtrees side by side) or in batches, the median of ten "
+        "repetitions of at least a second each in each of the run's "
         "whole processes, with its 95% bootstrap interval over processes and repetitions (10,000 resamples, seed "
         "2015; experiments/bench/measured.hpp): a target is met when the whole "
         "interval meets it, missed when none of it does, and undecided otherwise; machine: "
@@ -281,15 +292,16 @@ void write_engine_speed(std::ostringstream& md, const json& speed) {
        << fixed(row["speedup_vs_baseline"], 1) << " | " << met_cell(row.value("verdict", "inconclusive")) << " |\n";
   md << "\nIssue 19 raises the targets to E^F ≥ 300 and E^R ≥ 60 frames/s, one frame at a time or in batches of 8 "
         "frames solved in parallel on the machine's cores (`batch_frames`, the same interval rule):\n\n"
-        "| energy | target frames/s | one at a time (95% CI) | met | batched (95% CI) | met |\n"
-        "|---|---|---|---|---|---|\n";
+        "| energy | target frames/s | one at a time (95% CI) | met | batched (95% CI) | met | where a frame's time "
+        "goes |\n|---|---|---|---|---|---|---|\n";
   for (const auto& row : speed["rows"]) {
     if (!row.value("raised_target_frames_per_s", json()).is_number()) continue;
     md << "| " << row.value("energy", "") << " | " << fixed(row["raised_target_frames_per_s"], 0) << " | "
        << with_ci(row["frames_per_s"], row.value("frames_per_s_ci95", json()), 1) << " | "
        << met_cell(row.value("raised_verdict", json())) << " | "
        << with_ci(row.value("batched_frames_per_s", json()), row.value("batched_frames_per_s_ci95", json()), 1) << " | "
-       << met_cell(row.value("raised_verdict_batched", json())) << " |\n";
+       << met_cell(row.value("raised_verdict_batched", json())) << " | "
+       << frame_parts_cell(row.value("frame_parts", json())) << " |\n";
   }
   md << "\n";
   const json history = speed.value("history", json());

@@ -6,7 +6,8 @@
 // the octopus, whose E^R frame costs about the same (about 34 ms against 33 ms on the octopus, AMD EPYC),
 // where a structured 543 × 61 grid strip of that size, the earlier stand-in, took 52 ms. The baseline
 // refactorises from scratch every frame (symbolic + numeric, as common public implementations do),
-// measured in the same run; batch_frames/<energy> computes 8 frames at once (vertices_at(times)).
+// measured in the same run; batch_frames/<energy> computes 8 frames at once (vertices_at(times)), and
+// frame_assembly, frame_factor and frame_solve time the three parts of an E^R frame.
 #include "experiments/apps/bench/bench_context.hpp"
 #include "experiments/apps/bench/engine_bench.hpp"
 #include "experiments/inputs/mesh_file.hpp"
@@ -15,13 +16,17 @@
 #include "theory/global/frame_assembly.hpp"
 #include "theory/global/hermitian_form.hpp"
 #include "theory/global/interpolation.hpp"
+#include "theory/global/parallel_ranges.hpp"
+#include "theory/global/sparse_minimiser.hpp"
 
 #include <benchmark/benchmark.h>
 
 #include <Eigen/SparseCholesky>
 
+#include <complex>
 #include <filesystem>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace affinterp {
@@ -99,6 +104,32 @@ void frames_batched(benchmark::State& state, Energy energy) {
   bench::time_batches(state, global::Interpolation(w.source, w.target, options_for(energy)), "frames/s");
 }
 
+/// The three parts of a frame whose H(t) changes with t, as vertices_at(t) runs them (the factorisation and the
+/// solve on the threads it gives a frame, parallel_ranges.hpp; the assembly on one) on the engine's back-end
+/// for the size: what a frame's time is made of.
+enum class FramePart { assembly, factorisation, solve };
+
+void frame_part(benchmark::State& state, Energy energy, FramePart part) {
+  const Workload& w = workload();
+  const bench::AssembledPair pair(w.source, w.target, options_for(energy));
+  const global::FrameAssembly& assembly = pair.assembly();
+  global::FrameAssembly::SparseMatrix H = assembly.pattern();
+  const std::size_t threads = global::frame_threads(static_cast<std::size_t>(H.rows()));
+  global::SparseMinimiser<std::complex<double>> minimiser;
+  minimiser.analyse(H, assembly.dense_term());
+  assembly.matrix_at(0.5, H);
+  minimiser.factorise(H, threads);
+  const Eigen::VectorXcd b = assembly.right_hand_side_at(0.5, threads);
+  int k = 0;
+  for (auto _ : state) {
+    const double t = (k++ % 60 + 0.5) / 60;
+    if (part == FramePart::assembly) assembly.matrix_at(t, H);
+    if (part == FramePart::factorisation) minimiser.factorise(H, threads);
+    if (part == FramePart::solve) benchmark::DoNotOptimize(minimiser.solve(b, threads).data());
+  }
+  state.counters["threads"] = static_cast<double>(threads);
+}
+
 /// The baseline: the real 2n × 2n form G(t) = realified H(t), analysed and factorised from scratch for every
 /// frame. Building G is not timed, so the baseline's assembly is free: the ratio to it understates ours.
 void frame_refactor(benchmark::State& state, Energy energy) {
@@ -140,6 +171,11 @@ void register_all() {
     benchmark::RegisterBenchmark(("frame_refactor/" + e + "/" + mesh).c_str(), frame_refactor, energy)->Apply(repeated);
     benchmark::RegisterBenchmark(("batch_frames/" + e + "/" + mesh).c_str(), frames_batched, energy)->Apply(repeated);
   }
+  for (const auto& [part, name] : {std::pair{FramePart::assembly, "frame_assembly"},
+                                   {FramePart::factorisation, "frame_factor"},
+                                   {FramePart::solve, "frame_solve"}})
+    benchmark::RegisterBenchmark((std::string(name) + "/R/" + mesh).c_str(), frame_part, Energy::similarity, part)
+        ->Apply(repeated);
 }
 
 }  // namespace
