@@ -154,6 +154,17 @@ void FrameAssembly::build_pattern() {
       for (const auto& [k, alpha_k] : term.coefficients)
         for (const auto& [l, alpha_l] : term.coefficients)
           if (k >= l) constant_values_[static_cast<std::size_t>(slot(k, l))] += term.weight * alpha_k * alpha_l;
+  // every triangle's H₀, which does not change with t (hermitian_local_error.hpp), in triangle order
+  for (std::size_t i = 0; i < m; ++i) {
+    const int* slots = triangle_slots_.data() + 9 * i;
+    for (const std::vector<TriangleTerm>* terms : {&forward_terms_, &reverse_terms_})
+      if (!terms->empty()) {
+        const TriangleTerm& term = (*terms)[i];
+        const Eigen::Matrix3d H_0 = hermitian_constant_part(energy_, term.D) * term.weight;
+        for (int e = 0; e < 9; ++e)
+          if (slots[e] >= 0) constant_values_[static_cast<std::size_t>(slots[e])] += H_0(e / 3, e % 3);
+      }
+  }
 
   // A dense term c |Σ α_k z_k − r|² (the barycentre) is c α αᵀ, left to the minimiser. It is grounded when
   // it alone fixes translation: every triangle's error is translation invariant, and so is a sparse term
@@ -177,18 +188,21 @@ void FrameAssembly::matrix_at(double t, SparseMatrix& H) const {
   eigen_assert(H.nonZeros() == pattern_.nonZeros() && "H must have the structure of pattern()");
   std::complex<double>* values = H.valuePtr();
   for (Eigen::Index s = 0; s < H.nonZeros(); ++s) values[s] = constant_values_[static_cast<std::size_t>(s)];
-  auto add = [&](const TriangleTerm& term, const Eigen::Matrix2d& A, const int* slots) {
-    const Eigen::Matrix3cd H_i =
-        hermitian_local_error(energy_, term.D, term.corners, A, term.frobenius_share).H * term.weight;
+  // H(t) = the constraints + Σ H₀ (constant_values_) − Σ c v v*, each triangle's rank-one term at its A_i(t)
+  auto subtract = [&](const TriangleTerm& term, const Eigen::Matrix2d& A, const int* slots) {
+    const HermitianRankOne rank_one = hermitian_rank_one_part(energy_, term.D, term.corners, A, term.frobenius_share);
+    const double c = rank_one.c * term.weight;
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b)
-        if (const int s = slots[3 * a + b]; s >= 0) values[s] += H_i(a, b);
+        if (const int s = slots[3 * a + b]; s >= 0) values[s] -= c * (rank_one.v[a] * std::conj(rank_one.v[b]));
   };
-  for (std::size_t i = 0; i < forward_terms_.size(); ++i) {
-    const int* slots = triangle_slots_.data() + 9 * i;
-    add(forward_terms_[i], forward_.at(static_cast<Eigen::Index>(i), t), slots);
-    if (reverse_) add(reverse_terms_[i], reverse_->at(static_cast<Eigen::Index>(i), 1 - t), slots);  // E^{-1}(1 − t)
-  }
+  if (!isotropic_)
+    for (std::size_t i = 0; i < forward_terms_.size(); ++i) {
+      const int* slots = triangle_slots_.data() + 9 * i;
+      subtract(forward_terms_[i], forward_.at(static_cast<Eigen::Index>(i), t), slots);
+      if (reverse_)
+        subtract(reverse_terms_[i], reverse_->at(static_cast<Eigen::Index>(i), 1 - t), slots);  // E^{-1}(1 − t)
+    }
   // grounded at vertex 0: column 0 of the lower triangle is (H_00, 0, …, 0), the diagonal first
   if (dense_ && dense_->grounded)
     for (int s = H.outerIndexPtr()[0] + 1; s < H.outerIndexPtr()[1]; ++s) values[s] = 0.0;

@@ -5,8 +5,10 @@
 // hermitian_form.hpp (z_k = v_kx + i v_ky).
 //
 // When every triangle's error is E^F, H = L is real and does not involve A_i(t) (G = L ⊗ I₂): it is
-// assembled once. Otherwise H(t) is refilled for each t in a fixed sparsity pattern whose value slots
-// are precomputed. The assembly does not change after construction: the caller owns the matrix it fills.
+// assembled once. Otherwise each triangle's H_i = H₀ − c v v* (hermitian_local_error.hpp) has a part H₀
+// that does not involve A_i(t): their sum with the constraint terms is assembled once, and H(t) is that less
+// the triangles' rank-one terms at t, refilled for each t in a fixed sparsity pattern whose value slots are
+// precomputed. The assembly does not change after construction: the caller owns the matrix it fills.
 #include "theory/global/constraint_terms.hpp"
 #include "theory/global/frame_energy.hpp"
 #include "theory/global/frame_quadratic.hpp"
@@ -78,7 +80,7 @@ class FrameAssembly {
   VertexStars stars_;  ///< of the source's triangles (the same list as the target's)
   SparseMatrix pattern_;
   std::vector<int> triangle_slots_;      ///< per triangle, 9 slots into pattern_'s values (−1: upper half)
-  std::vector<double> constant_values_;  ///< the sparse constraint terms (real)
+  std::vector<double> constant_values_;  ///< the sparse constraint terms and every triangle's H₀ (real)
   std::optional<DenseTerm> dense_;
 };
 

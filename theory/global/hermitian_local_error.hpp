@@ -34,23 +34,42 @@ inline Eigen::Vector3cd hermitian_frobenius_linear_term(const Eigen::Matrix<doub
   return -2.0 * detail::complex_columns(A * D.transpose());
 }
 
-/// One triangle's E^F, E^R or blend (w the E^F share), or E^S from its corners p.
+/// H of E^R, E^S and the blend split as H = H₀ − c v v*: H₀ the part that does not depend on A (D Dᵀ; Π for
+/// E^S), and the rank-one term that removes the complex line of A (of X). E^F has c = 0.
+struct HermitianRankOne {
+  Eigen::Vector3cd v;  ///< μ (E^R, blend) or x (E^S)
+  double c;            ///< (1 − w)/‖A‖² (E^R: w = 0; E^F: w = 1) or 1/‖X‖² (E^S)
+};
+
+/// H₀ of one triangle's E^F, E^R or blend (D Dᵀ) or E^S (Π), real.
+inline Eigen::Matrix3d hermitian_constant_part(Energy energy, const Eigen::Matrix<double, 3, 2>& D) {
+  if (energy == Energy::procrustes) return Eigen::Matrix3d::Identity() - Eigen::Matrix3d::Constant(1.0 / 3);
+  return D * D.transpose();
+}
+
+/// The rank-one term c v v* of one triangle's H at A (w the E^F share of a blend, p its corners for E^S).
+inline HermitianRankOne hermitian_rank_one_part(Energy energy, const Eigen::Matrix<double, 3, 2>& D,
+                                                const Eigen::Matrix<double, 2, 3>& p, const Eigen::Matrix2d& A,
+                                                double w) {
+  if (energy == Energy::procrustes) {
+    const Eigen::Vector3cd x = detail::complex_columns(A * (p.colwise() - p.rowwise().mean()));
+    return {x, 1.0 / x.squaredNorm()};
+  }
+  const double frobenius_share = energy == Energy::frobenius ? 1.0 : energy == Energy::blend ? w : 0.0;
+  return {detail::complex_columns(A * D.transpose()), (1.0 - frobenius_share) / A.squaredNorm()};
+}
+
+/// One triangle's E^F, E^R or blend (w the E^F share), or E^S from its corners p: H = H₀ − c v v*, and ũ.
 inline HermitianTriangleForm hermitian_local_error(Energy energy, const Eigen::Matrix<double, 3, 2>& D,
                                                    const Eigen::Matrix<double, 2, 3>& p, const Eigen::Matrix2d& A,
                                                    double w) {
   HermitianTriangleForm form{Eigen::Matrix3cd::Zero(), Eigen::Vector3cd::Zero()};
-  if (energy == Energy::procrustes) {
-    const Eigen::Matrix<double, 2, 3> centred = p.colwise() - p.rowwise().mean();
-    const Eigen::Vector3cd x = detail::complex_columns(A * centred);
-    form.H.real() = Eigen::Matrix3d::Identity() - Eigen::Matrix3d::Constant(1.0 / 3);
-    form.H -= x * x.adjoint() / x.squaredNorm();
-    return form;
-  }
+  form.H.real() = hermitian_constant_part(energy, D);
+  const HermitianRankOne rank_one = hermitian_rank_one_part(energy, D, p, A, w);
+  if (rank_one.c != 0) form.H -= rank_one.c * (rank_one.v * rank_one.v.adjoint());
   const double frobenius_share = energy == Energy::frobenius ? 1.0 : energy == Energy::blend ? w : 0.0;
-  const Eigen::Vector3cd mu = detail::complex_columns(A * D.transpose());
-  form.H.real() = D * D.transpose();
-  if (frobenius_share < 1.0) form.H -= (1.0 - frobenius_share) / A.squaredNorm() * (mu * mu.adjoint());
-  if (frobenius_share > 0.0) form.u = -2.0 * frobenius_share * mu;
+  if (energy != Energy::procrustes && frobenius_share > 0.0)
+    form.u = hermitian_frobenius_linear_term(D, A) * frobenius_share;
   return form;
 }
 
