@@ -8,14 +8,18 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
 
 namespace affinterp::claims {
 namespace {
 
 namespace fs = std::filesystem;
 
+/// A file of the running test's own: CTest runs these tests as processes side by side.
 fs::path write_bench(const nlohmann::json& benchmarks) {
-  const fs::path file = fs::temp_directory_path() / "affinterp_engine_speed_test.json";
+  const fs::path file = fs::temp_directory_path() /
+                        ("affinterp_engine_speed_" +
+                         std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".json");
   std::ofstream(file)
       << nlohmann::json{{"context", {{"affinterp_cpu", "test cpu"}}}, {"benchmarks", benchmarks}}.dump();
   return file;
