@@ -26,19 +26,24 @@ std::optional<double> raised_frames_per_second_target(const std::string& energy)
   return std::nullopt;
 }
 
-/// Where a frame's time goes, from the run's frame_assembly, frame_factor and frame_solve rows (bench_interp:
-/// E^R's parts as vertices_at(t) runs them), when it has them.
+/// Where a frame's time goes, from the run's frame_rhs, frame_assembly, frame_factor and frame_solve rows
+/// (bench_interp: the parts of a frame as vertices_at(t) runs them), when it has them.
 nlohmann::json frame_parts(const BenchResults& times, const std::optional<BenchResults>& threads,
                            const std::string& rest, double frame_ms) {
-  const std::optional<double> assembly = times["frame_assembly/" + rest], factor = times["frame_factor/" + rest],
-                              solve = times["frame_solve/" + rest];
-  if (!assembly || !factor || !solve) return nullptr;
-  const std::optional<double> factor_threads = threads ? (*threads)["frame_factor/" + rest] : std::nullopt;
-  return {{"assembly_ms", *assembly},
-          {"factor_ms", *factor},
-          {"solve_ms", *solve},
-          {"threads", optional_number(factor_threads)},
-          {"rest_ms", frame_ms - *assembly - *factor - *solve}};
+  const std::optional<double> solve = times["frame_solve/" + rest];
+  if (!solve) return nullptr;
+  nlohmann::json parts{{"solve_ms", *solve}};
+  double rest_ms = frame_ms - *solve;
+  for (const auto& [key, benchmark] : {std::pair{"right_hand_side_ms", "frame_rhs/"},
+                                       {"assembly_ms", "frame_assembly/"},
+                                       {"factor_ms", "frame_factor/"}}) {
+    const std::optional<double> ms = times[benchmark + rest];
+    parts[key] = optional_number(ms);
+    if (ms) rest_ms -= *ms;
+  }
+  parts["threads"] = optional_number(threads ? (*threads)["frame_solve/" + rest] : std::nullopt);
+  parts["rest_ms"] = rest_ms;
+  return parts;
 }
 
 double identity(double x) { return x; }

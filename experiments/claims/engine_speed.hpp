@@ -18,8 +18,9 @@ namespace affinterp::claims {
 /// its "…_ci95" (8 frames a call to vertices_at(times) on the machine's cores; null: not measured), issue 19's
 /// "raised_target_frames_per_s" (E^F 300, E^R 60) and its "raised_verdict" one frame at a time and
 /// "raised_verdict_batched", and "frame_parts" (null: not measured): where one frame's time goes, the medians of
-/// bench_interp's frame_assembly, frame_factor and frame_solve, {"assembly_ms", "factor_ms", "solve_ms", "threads"
-/// (the factorisation's), "rest_ms" (the frame's median less the three)}}]}; null when
+/// bench_interp's frame_rhs, frame_assembly, frame_factor and frame_solve, {"right_hand_side_ms", "assembly_ms",
+/// "factor_ms" (each null where the energy's frame has no such part), "solve_ms", "threads" (a frame's), "rest_ms"
+/// (the frame's median less its parts)}}]}; null when
 /// `bench_file` does not exist. The medians' 95% bootstrap intervals (measured.hpp; null with fewer than 10
 /// repetitions) decide each row as the speed claims are decided: "reproduced" (targets met) when every
 /// interval lies within its target, "not-reproduced" when one lies outside, else "inconclusive".

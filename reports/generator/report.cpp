@@ -252,13 +252,19 @@ std::string met_cell(const json& verdict) {
   return v == "reproduced" ? "yes" : v == "not-reproduced" ? "**no**" : "undecided";
 }
 
-/// Where one frame's time goes (engine_speed.hpp's frame_parts: bench_interp's frame_assembly, frame_factor and
-/// frame_solve medians), or — without those rows.
+/// Where one frame's time goes (engine_speed.hpp's frame_parts: bench_interp's frame_rhs, frame_assembly,
+/// frame_factor and frame_solve medians), or — without those rows.
 std::string frame_parts_cell(const json& parts) {
   if (!parts.is_object()) return "—";
-  return "numeric factorisation " + fixed(parts["factor_ms"], 1) + " ms (" + fixed(parts["threads"], 0) +
-         " threads), assembly of H(t) " + fixed(parts["assembly_ms"], 1) + " ms (one thread), solve " +
-         fixed(parts["solve_ms"], 1) + " ms; the rest " + fixed(parts["rest_ms"], 1) + " ms";
+  std::string cell;
+  for (const auto& [key, name] : {std::pair{"factor_ms", "numeric factorisation"},
+                                  {"assembly_ms", "assembly of H(t) (on one thread)"},
+                                  {"right_hand_side_ms", "right-hand side"},
+                                  {"solve_ms", "solve"}})
+    if (parts.value(key, json()).is_number())
+      cell += (cell.empty() ? "" : ", ") + std::string(name) + " " + fixed(parts[key], 1) + " ms";
+  return cell + " on " + fixed(parts.value("threads", json()), 0) + " threads; the rest " + fixed(parts["rest_ms"], 1) +
+         " ms";
 }
 
 /// The global engine's speed against its targets (bench_interp, one run on one machine).

@@ -196,9 +196,7 @@ Interpolation& Interpolation::operator=(Interpolation&&) noexcept = default;
 Eigen::Matrix2Xd Interpolation::vertices_at(double t) const {
   const Engine& engine = *engine_;  // const all through, but for the frames' workspaces
   engine.require_in_range(t);
-  if (engine.assembly->isotropic())
-    return engine.isotropic_frame(
-        t, ranges_for(static_cast<std::size_t>(engine.assembly->pattern().rows()), triangles_per_thread / 2));
+  if (engine.assembly->isotropic()) return engine.isotropic_frame(t, engine.threads_per_frame());
   Engine::Workspace& work = *engine.first_workspace;
   const std::lock_guard lock(work.mutex);
   return engine.frame_in(work, t, engine.threads_per_frame());

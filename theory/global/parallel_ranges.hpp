@@ -18,8 +18,8 @@ std::size_t ranges_for(std::size_t count, std::size_t grain);
 /// Triangles per thread below which the set-up's and a frame's loops over triangles stay on one thread.
 inline constexpr std::size_t triangles_per_thread = 1 << 15;
 
-/// The threads worth one frame's assembly, numeric factorisation and solve for `unknowns` vertices: one per
-/// 4096 unknowns, up to the hardware's. Below that a frame stays on the caller's thread: the factor's two groups
+/// The threads worth one frame's right-hand side, numeric factorisation and solve for `unknowns` vertices: one
+/// per 4096 unknowns, up to the hardware's. Below that a frame stays on the caller's thread: the factor's two groups
 /// of subtrees (simplicial_factor.hpp) cost about a millisecond at 4096, against some tens of microseconds to
 /// start a thread.
 inline std::size_t frame_threads(std::size_t unknowns) { return ranges_for(unknowns, 1 << 12); }

@@ -7,7 +7,7 @@
 // where a structured 543 × 61 grid strip of that size, the earlier stand-in, took 52 ms. The baseline
 // refactorises from scratch every frame (symbolic + numeric, as common public implementations do),
 // measured in the same run; batch_frames/<energy> computes 8 frames at once (vertices_at(times)), and
-// frame_assembly, frame_factor and frame_solve time the three parts of an E^R frame.
+// frame_rhs, frame_assembly, frame_factor and frame_solve time the parts of an E^F and an E^R frame.
 #include "experiments/apps/bench/bench_context.hpp"
 #include "experiments/apps/bench/engine_bench.hpp"
 #include "experiments/inputs/mesh_file.hpp"
@@ -104,10 +104,11 @@ void frames_batched(benchmark::State& state, Energy energy) {
   bench::time_batches(state, global::Interpolation(w.source, w.target, options_for(energy)), "frames/s");
 }
 
-/// The three parts of a frame whose H(t) changes with t, as vertices_at(t) runs them (the factorisation and the
-/// solve on the threads it gives a frame, parallel_ranges.hpp; the assembly on one) on the engine's back-end
-/// for the size: what a frame's time is made of.
-enum class FramePart { assembly, factorisation, solve };
+/// The parts of a frame as vertices_at(t) runs them, on the engine's back-end for the size and the threads it gives
+/// a frame (parallel_ranges.hpp; H(t)'s assembly on one): what a frame's time is made of. Where H(t) changes with t
+/// (E^R), its assembly, numeric factorisation and solve; where it does not (E^F), the right-hand side and the solve
+/// of its two real columns.
+enum class FramePart { right_hand_side, assembly, factorisation, solve };
 
 void frame_part(benchmark::State& state, Energy energy, FramePart part) {
   const Workload& w = workload();
@@ -115,17 +116,29 @@ void frame_part(benchmark::State& state, Energy energy, FramePart part) {
   const global::FrameAssembly& assembly = pair.assembly();
   global::FrameAssembly::SparseMatrix H = assembly.pattern();
   const std::size_t threads = global::frame_threads(static_cast<std::size_t>(H.rows()));
-  global::SparseMinimiser<std::complex<double>> minimiser;
-  minimiser.analyse(H, assembly.dense_term());
   assembly.matrix_at(0.5, H);
-  minimiser.factorise(H, threads);
   const Eigen::VectorXcd b = assembly.right_hand_side_at(0.5, threads);
+  global::SparseMinimiser<std::complex<double>> minimiser;
+  global::SparseMinimiser<double> fixed;
+  Eigen::MatrixXd xy(b.size(), 2);
+  if (assembly.isotropic()) {
+    Eigen::SparseMatrix<double> L = H.real();
+    L.makeCompressed();
+    fixed.analyse(L, assembly.dense_term());
+    fixed.factorise(L, threads);
+    xy << b.real(), b.imag();
+  } else {
+    minimiser.analyse(H, assembly.dense_term());
+    minimiser.factorise(H, threads);
+  }
   int k = 0;
   for (auto _ : state) {
     const double t = (k++ % 60 + 0.5) / 60;
+    if (part == FramePart::right_hand_side) benchmark::DoNotOptimize(assembly.right_hand_side_at(t, threads).data());
     if (part == FramePart::assembly) assembly.matrix_at(t, H);
     if (part == FramePart::factorisation) minimiser.factorise(H, threads);
-    if (part == FramePart::solve) benchmark::DoNotOptimize(minimiser.solve(b, threads).data());
+    if (part == FramePart::solve && assembly.isotropic()) benchmark::DoNotOptimize(fixed.solve(xy, threads).data());
+    if (part == FramePart::solve && !assembly.isotropic()) benchmark::DoNotOptimize(minimiser.solve(b, threads).data());
   }
   state.counters["threads"] = static_cast<double>(threads);
 }
@@ -171,11 +184,15 @@ void register_all() {
     benchmark::RegisterBenchmark(("frame_refactor/" + e + "/" + mesh).c_str(), frame_refactor, energy)->Apply(repeated);
     benchmark::RegisterBenchmark(("batch_frames/" + e + "/" + mesh).c_str(), frames_batched, energy)->Apply(repeated);
   }
-  for (const auto& [part, name] : {std::pair{FramePart::assembly, "frame_assembly"},
-                                   {FramePart::factorisation, "frame_factor"},
-                                   {FramePart::solve, "frame_solve"}})
-    benchmark::RegisterBenchmark((std::string(name) + "/R/" + mesh).c_str(), frame_part, Energy::similarity, part)
-        ->Apply(repeated);
+  const std::pair<FramePart, const char*> rhs{FramePart::right_hand_side, "frame_rhs"},
+      assembly{FramePart::assembly, "frame_assembly"}, factor{FramePart::factorisation, "frame_factor"},
+      solve{FramePart::solve, "frame_solve"};
+  for (const auto& [energy, parts] : {std::pair{Energy::frobenius, std::vector{rhs, solve}},
+                                      {Energy::similarity, std::vector{assembly, factor, solve}}})
+    for (const auto& [part, name] : parts)
+      benchmark::RegisterBenchmark((std::string(name) + "/" + global::to_string(energy) + "/" + mesh).c_str(),
+                                   frame_part, energy, part)
+          ->Apply(repeated);
 }
 
 }  // namespace
