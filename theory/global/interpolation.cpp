@@ -113,8 +113,13 @@ struct Interpolation::Engine {
     v << z.real().transpose(), z.imag().transpose();  // z_k = v_kx + i v_ky
     return v;
   }
-  /// The threads worth one frame (parallel_ranges.hpp).
-  std::size_t threads_per_frame() const { return frame_threads(static_cast<std::size_t>(assembly->pattern().rows())); }
+  /// The threads worth one frame, and one numeric factorisation (parallel_ranges.hpp).
+  std::size_t threads_per_frame() const {
+    return frame_threads(static_cast<std::size_t>(assembly->pattern().rows()), !assembly->isotropic());
+  }
+  std::size_t factor_threads() const {
+    return frame_threads(static_cast<std::size_t>(assembly->pattern().rows()), /*factorised_per_frame=*/true);
+  }
   /// The first `count` workspaces, the missing ones made as copies of the first.
   std::vector<Workspace*> reserve_workspaces(std::size_t count) const {
     const std::lock_guard lock(workspaces_mutex);
@@ -172,11 +177,11 @@ struct Interpolation::Engine {
       side_by_side(fill, [&] { analyse(fixed, L); });
       L = H.real();
       L.makeCompressed();
-      fixed.factorise(L, threads_per_frame());
+      fixed.factorise(L, factor_threads());
     } else {
       SparseMinimiser<std::complex<double>> minimiser;
       side_by_side(fill, [&] { analyse(minimiser, assembly->pattern()); });
-      minimiser.factorise(H, threads_per_frame());
+      minimiser.factorise(H, factor_threads());
       workspaces.push_back(std::make_unique<Workspace>(std::move(H), std::move(minimiser)));
       first_workspace = workspaces.front().get();
     }

@@ -18,11 +18,13 @@ std::size_t ranges_for(std::size_t count, std::size_t grain);
 /// Triangles per thread below which the set-up's and a frame's loops over triangles stay on one thread.
 inline constexpr std::size_t triangles_per_thread = 1 << 15;
 
-/// The threads worth one frame's right-hand side, numeric factorisation and solve for `unknowns` vertices: one
-/// per 4096 unknowns, up to the hardware's. Below that a frame stays on the caller's thread: the factor's two groups
-/// of subtrees (simplicial_factor.hpp) cost about a millisecond at 4096, against some tens of microseconds to
-/// start a thread.
-inline std::size_t frame_threads(std::size_t unknowns) { return ranges_for(unknowns, 1 << 12); }
+/// The threads worth one frame for `unknowns` vertices, up to the hardware's. A frame that factorises H(t) takes one
+/// per 4096 unknowns: the factor's two groups of subtrees (simplicial_factor.hpp) cost about a millisecond at
+/// 4096, against some tens of microseconds to start a thread. A frame with H factored once (E^F: a right-hand side
+/// and a solve) takes one per 16384: at 8192 unknowns two threads gained nothing (1.00-1.27 against 1.04-1.06 ms).
+inline std::size_t frame_threads(std::size_t unknowns, bool factorised_per_frame) {
+  return ranges_for(unknowns, factorised_per_frame ? 1 << 12 : 1 << 14);
+}
 
 /// Runs `there` on a thread of its own while `here` runs on the caller's, and returns when both are done;
 /// rethrows the first exception (here's first).

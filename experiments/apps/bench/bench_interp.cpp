@@ -115,7 +115,7 @@ void frame_part(benchmark::State& state, Energy energy, FramePart part) {
   const bench::AssembledPair pair(w.source, w.target, options_for(energy));
   const global::FrameAssembly& assembly = pair.assembly();
   global::FrameAssembly::SparseMatrix H = assembly.pattern();
-  const std::size_t threads = global::frame_threads(static_cast<std::size_t>(H.rows()));
+  const std::size_t threads = global::frame_threads(static_cast<std::size_t>(H.rows()), !assembly.isotropic());
   assembly.matrix_at(0.5, H);
   const Eigen::VectorXcd b = assembly.right_hand_side_at(0.5, threads);
   global::SparseMinimiser<std::complex<double>> minimiser;
