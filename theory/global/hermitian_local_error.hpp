@@ -26,6 +26,11 @@ namespace detail {
 inline Eigen::Vector3cd complex_columns(const Eigen::Matrix<double, 2, 3>& X) {
   return Eigen::Vector3cd({X(0, 0), X(1, 0)}, {X(0, 1), X(1, 1)}, {X(0, 2), X(1, 2)});
 }
+
+/// w of w E^F + (1 − w) E^R: 1 for E^F, the blend's weight, 0 for E^R.
+inline double frobenius_share(Energy energy, double w) {
+  return energy == Energy::frobenius ? 1.0 : energy == Energy::blend ? w : 0.0;
+}
 }  // namespace detail
 
 /// ũ = −2μ of E^F.
@@ -55,8 +60,7 @@ inline HermitianRankOne hermitian_rank_one_part(Energy energy, const Eigen::Matr
     const Eigen::Vector3cd x = detail::complex_columns(A * (p.colwise() - p.rowwise().mean()));
     return {x, 1.0 / x.squaredNorm()};
   }
-  const double frobenius_share = energy == Energy::frobenius ? 1.0 : energy == Energy::blend ? w : 0.0;
-  return {detail::complex_columns(A * D.transpose()), (1.0 - frobenius_share) / A.squaredNorm()};
+  return {detail::complex_columns(A * D.transpose()), (1.0 - detail::frobenius_share(energy, w)) / A.squaredNorm()};
 }
 
 /// One triangle's E^F, E^R or blend (w the E^F share), or E^S from its corners p: H = H₀ − c v v*, and ũ.
@@ -67,9 +71,8 @@ inline HermitianTriangleForm hermitian_local_error(Energy energy, const Eigen::M
   form.H.real() = hermitian_constant_part(energy, D);
   const HermitianRankOne rank_one = hermitian_rank_one_part(energy, D, p, A, w);
   if (rank_one.c != 0) form.H -= rank_one.c * (rank_one.v * rank_one.v.adjoint());
-  const double frobenius_share = energy == Energy::frobenius ? 1.0 : energy == Energy::blend ? w : 0.0;
-  if (energy != Energy::procrustes && frobenius_share > 0.0)
-    form.u = hermitian_frobenius_linear_term(D, A) * frobenius_share;
+  if (const double share = detail::frobenius_share(energy, w); energy != Energy::procrustes && share > 0.0)
+    form.u = -2.0 * share * rank_one.v;  // v = μ
   return form;
 }
 
