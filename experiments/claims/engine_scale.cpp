@@ -26,7 +26,32 @@ constexpr double fit_from_triangles = 60'000;
 /// Frames per batch_frames iteration (bench_scale.cpp).
 constexpr double batch_frames = 8;
 
-bool at_most(const nlohmann::json& value, double target) { return value.is_number() && value.get<double>() <= target; }
+/// A target against the spread of its runs, [least, largest]: met when every run meets it, missed when none
+/// does, undecided otherwise or without a spread. With five i.i.d. runs the least and the largest bracket the
+/// median of runs with probability 1 − 2 · 2⁻⁵ ≈ 94%, whatever their distribution (order statistics), so a
+/// verdict does not flip with the machine's noise as one on the median alone does.
+std::string verdict_on_runs(const nlohmann::json& range, double limit) {
+  if (!range.is_array()) return "undecided";
+  if (range[1].get<double>() <= limit) return "met";
+  return range[0].get<double>() > limit ? "missed" : "undecided";
+}
+
+/// The least and the largest of a benchmark's runs (every repetition of every process) times `scale`; null with
+/// fewer than two runs (a file holding only aggregates).
+nlohmann::json runs_spread(const bench::BenchResults& results, const std::string& name, double scale) {
+  const auto it = results.repetitions.find(name);
+  if (it == results.repetitions.end()) return nullptr;
+  const std::vector<double> runs = bench::pooled(it->second);
+  if (runs.size() < 2) return nullptr;
+  const auto [least, largest] = std::minmax_element(runs.begin(), runs.end());
+  return {*least * scale, *largest * scale};
+}
+
+/// The spread of a quotient a / b of two spreads: over every pairing of their runs.
+nlohmann::json quotient_spread(const nlohmann::json& a, const nlohmann::json& b) {
+  if (!a.is_array() || !b.is_array()) return nullptr;
+  return {a[0].get<double>() / b[1].get<double>(), a[1].get<double>() / b[0].get<double>()};
+}
 
 /// Splits "kind/energy/triangles[/back-end]".
 struct BenchName {
@@ -126,8 +151,9 @@ nlohmann::json back_end_row(const nlohmann::json& back_ends, const std::string& 
   return nullptr;
 }
 
-/// Each target alone at the largest size `r` of `rows` (≥ 1M triangles): what was measured, whether it is met
-/// and, when it is missed, where the time goes by the run's own rows of `back_end` (the engine's at this size).
+/// Each target alone at the largest size `r` of `rows` (≥ 1M triangles): what was measured (the median of runs),
+/// the spread of the runs, the verdict on that spread and, when it is not met, where the time goes by the run's own
+/// rows of `back_end` (the engine's at this size).
 nlohmann::json target_verdicts(const nlohmann::json& rows, std::size_t r, const nlohmann::json& growth_R,
                                const nlohmann::json& back_ends, const std::string& back_end,
                                const nlohmann::json& back_end_exponents) {
@@ -137,30 +163,33 @@ nlohmann::json target_verdicts(const nlohmann::json& rows, std::size_t r, const 
     return parts.is_null() ? nlohmann::json() : parts.value(key, nlohmann::json());
   };
   nlohmann::json verdicts = nlohmann::json::array();
-  const auto add = [&](const std::string& target, const nlohmann::json& measured, double limit, std::string cause) {
-    const bool met = at_most(measured, limit);
+  const auto add = [&](const std::string& target, const nlohmann::json& measured, const nlohmann::json& range,
+                       double limit, std::string cause) {
+    const std::string verdict = verdict_on_runs(range, limit);
     verdicts.push_back({{"target", target},
                         {"limit", limit},
                         {"measured", measured},
-                        {"met", met},
-                        {"cause", met ? nlohmann::json() : nlohmann::json(std::move(cause))}});
+                        {"range", range},
+                        {"verdict", verdict},
+                        {"cause", verdict == "met" ? nlohmann::json() : nlohmann::json(std::move(cause))}});
   };
+  const auto range = [&](const std::string& key) { return row.value(key + "_range", nlohmann::json()); };
   for (const char* energy : {"F", "R"}) {
     const std::string e = energy;
-    add("set-up E^" + e, row["setup_" + e + "_ms"], setup_target_ms,
+    add("set-up E^" + e, row["setup_" + e + "_ms"], range("setup_" + e), setup_target_ms,
         "of its " + ms(row["setup_" + e + "_cpu_ms"]) +
             " of the calling thread's CPU, the first numeric "
             "factorisation takes " +
             ms(part(("factor_" + e + "_cpu_ms").c_str())) + " (" + back_end +
             "); the local maps, the rotation branches, the sparsity pattern and the ordering take the rest");
   }
-  add("E^F frame", row["frame_F_ms"], frame_F_target_ms,
+  add("E^F frame", row["frame_F_ms"], range("frame_F"), frame_F_target_ms,
       "the solve with the factor (two right-hand sides) takes " + ms(part("solve_F_cpu_ms")) + " of it (" + back_end +
           "); the local paths and the right-hand side the rest");
   const double batch_gain = row["frame_R_ms"].is_number() && row["batch_R_ms"].is_number()
                                 ? row["frame_R_ms"].get<double>() / row["batch_R_ms"].get<double>()
                                 : std::nan("");
-  add("E^R batched frame", row["batch_R_ms"], batch_R_target_ms,
+  add("E^R batched frame", row["batch_R_ms"], range("batch_R"), batch_R_target_ms,
       "every E^R frame is a numeric factorisation, " + ms(part("factor_R_cpu_ms")) + " on one thread (" + back_end +
           "); a batch of 8 on the machine's cores made a frame " + times(batch_gain) + " faster than one at a time");
   const nlohmann::json p = back_end_exponents.value("factor_R_ms", nlohmann::json());
@@ -174,8 +203,10 @@ nlohmann::json target_verdicts(const nlohmann::json& rows, std::size_t r, const 
   if (global::has_cholmod())
     growth_cause += "; below " + std::to_string(global::cholmod_from_unknowns<std::complex<double>>) +
                     " unknowns the complex systems factorise on the simplicial LDLᴴ instead (sparse_factor.hpp)";
-  add("E^R batched frame's growth from the size before", growth_R, growth_R_target, growth_cause);
-  add("peak memory (MB)", row["peak_MB"], peak_target_MB, "the factors and the frames' workspaces");
+  add("E^R batched frame's growth from the size before", growth_R,
+      r > 0 ? quotient_spread(range("batch_R"), rows[r - 1].value("batch_R_range", nlohmann::json())) : nullptr,
+      growth_R_target, growth_cause);
+  add("peak memory (MB)", row["peak_MB"], range("peak_MB"), peak_target_MB, "the factors and the frames' workspaces");
   return verdicts;
 }
 
@@ -200,9 +231,18 @@ nlohmann::json engine_scale(const std::filesystem::path& bench_file, const RunSe
       nlohmann::json& row = engine[b->triangles];
       row["triangles"] = b->triangles;
       const std::string key = b->kind == "batch_frames" ? "batch_" + b->energy : b->kind.substr(6) + "_" + b->energy;
-      row[key + "_ms"] = b->kind == "batch_frames" ? ms / batch_frames : ms;  // batches: per frame, amortised
+      const double per = b->kind == "batch_frames" ? 1 / batch_frames : 1;  // batches: per frame, amortised
+      row[key + "_ms"] = ms * per;
+      row[key + "_range"] = runs_spread(*times, name, per);
       if (cpu_ms.is_number() && b->kind != "batch_frames") row[key + "_cpu_ms"] = cpu_ms;
       if (peak.is_number()) row["peak_MB"] = std::max(row.value("peak_MB", 0.0), peak.get<double>());
+      // The size's peak is its largest benchmark's: its spread, the largest of each benchmark's least and largest.
+      if (const nlohmann::json r = peaks ? runs_spread(*peaks, name, 1) : nullptr; r.is_array()) {
+        nlohmann::json& peak_range = row["peak_MB_range"];
+        peak_range = peak_range.is_array() ? nlohmann::json{std::max(peak_range[0].get<double>(), r[0].get<double>()),
+                                                            std::max(peak_range[1].get<double>(), r[1].get<double>())}
+                                           : r;
+      }
     } else if (b->kind.starts_with("backend_") && !b->back_end.empty()) {
       nlohmann::json& row = by_back_end[b->back_end][b->triangles];
       row["triangles"] = b->triangles;
@@ -211,9 +251,10 @@ nlohmann::json engine_scale(const std::filesystem::path& bench_file, const RunSe
       if (cpu_ms.is_number()) row[key + "_cpu_ms"] = cpu_ms;
     }
   }
-  nlohmann::json rows =
-      rows_of(engine, {"setup_F_ms", "setup_R_ms", "frame_F_ms", "frame_R_ms", "setup_F_cpu_ms", "setup_R_cpu_ms",
-                       "frame_F_cpu_ms", "frame_R_cpu_ms", "batch_F_ms", "batch_R_ms", "peak_MB"});
+  nlohmann::json rows = rows_of(
+      engine, {"setup_F_ms", "setup_R_ms", "frame_F_ms", "frame_R_ms", "setup_F_cpu_ms", "setup_R_cpu_ms",
+               "frame_F_cpu_ms", "frame_R_cpu_ms", "batch_F_ms", "batch_R_ms", "peak_MB", "setup_F_range",
+               "setup_R_range", "frame_F_range", "frame_R_range", "batch_F_range", "batch_R_range", "peak_MB_range"});
   nlohmann::json exponents;
   for (const char* key : {"setup_F_ms", "setup_R_ms", "frame_F_ms", "frame_R_ms", "batch_R_ms", "peak_MB"})
     exponents[key] = exponent(rows, key);
@@ -232,14 +273,18 @@ nlohmann::json engine_scale(const std::filesystem::path& bench_file, const RunSe
   nlohmann::json engine_back_end_exponents = nlohmann::json::object();
   for (const auto& back_end : back_ends)
     if (back_end["name"] == engine_back_end) engine_back_end_exponents = back_end["exponents"];
-  nlohmann::json met = nullptr, growth_R = nullptr, verdicts = nlohmann::json::array();
+  nlohmann::json verdict = nullptr, growth_R = nullptr, verdicts = nlohmann::json::array();
   for (std::size_t r = 0; r < rows.size(); ++r) {  // the largest size at or beyond the targets' 1M triangles
     const nlohmann::json& row = rows[r];
     if (r > 0 && rows[r - 1]["batch_R_ms"].is_number() && row["batch_R_ms"].is_number())
       growth_R = row["batch_R_ms"].get<double>() / rows[r - 1]["batch_R_ms"].get<double>();
     if (row["triangles"].get<double>() >= target_triangles) {
       verdicts = target_verdicts(rows, r, growth_R, back_ends, engine_back_end, engine_back_end_exponents);
-      met = std::all_of(verdicts.begin(), verdicts.end(), [](const nlohmann::json& v) { return v["met"].get<bool>(); });
+      const auto any = [&](const char* v) {
+        return std::any_of(verdicts.begin(), verdicts.end(),
+                           [v](const nlohmann::json& t) { return t["verdict"] == v; });
+      };
+      verdict = any("missed") ? "missed" : any("undecided") ? "undecided" : "met";
     }
   }
   nlohmann::json scale = {
@@ -264,7 +309,7 @@ nlohmann::json engine_scale(const std::filesystem::path& bench_file, const RunSe
         {"batch_R_ms", batch_R_target_ms},
         {"peak_MB", peak_target_MB},
         {"growth_R", growth_R_target}}},
-      {"met", met},
+      {"verdict", verdict},
       {"target_verdicts", verdicts}};
   scale["figures"] = settings.draws_figures() && !rows.empty() ? nlohmann::json(draw_cost_curve(settings, scale))
                                                                : nlohmann::json::array();

@@ -14,16 +14,20 @@
 namespace affinterp::claims {
 
 /// {"file", "machine", "compiler", "flags", "blas" (the BLAS the benchmarks loaded), "rows": [{"triangles",
-/// "setup_F_ms", "setup_R_ms", "frame_F_ms", "frame_R_ms" (wall-clock), the same with "_cpu_ms" (the calling
-/// thread's CPU time), "batch_F_ms", "batch_R_ms" (vertices_at(times) of 8 frames, wall-clock per frame),
-/// "peak_MB"}] (the back-end the engine picks by size; ascending size; null: not measured), "exponents" {key: p
-/// of key ≈ c · triangles^p, fitted from "exponents_from_triangles" up}, "growth_R" (batch_R_ms at the largest
-/// size over the size before), "back_ends": [{"name", "rows": [{"triangles", "setup_*", "frame_*", "factor_*",
-/// "solve_*" for F and R, in ms and cpu ms}], "exponents"}], "targets": {"triangles", "setup_ms", "frame_F_ms",
-/// "batch_R_ms", "peak_MB", "growth_R"}, "met" (null when no size reaches the targets' 1M triangles, else whether
-/// the largest such size meets all, on wall-clock times), "target_verdicts": [{"target", "limit", "measured", "met",
-/// "cause" (when missed: where the time goes, from the run's own back-end rows)}] at that size, "figures" (the drawn
-/// cost curve, when `settings` draws figures)}; null when `bench_file` does not exist.
+/// "setup_F_ms", "setup_R_ms", "frame_F_ms", "frame_R_ms" (wall-clock, the median of runs), the same with
+/// "_cpu_ms" (the calling thread's CPU time), "batch_F_ms", "batch_R_ms" (vertices_at(times) of 8 frames,
+/// wall-clock per frame), "peak_MB", and with "_range" in place of "_ms" (for the peak: after "peak_MB") the
+/// least and the largest of the runs (null: the file holds no repetitions)}] (the back-end the engine picks by
+/// size; ascending size; null: not measured), "exponents" {key: p of key ≈ c · triangles^p, fitted from
+/// "exponents_from_triangles" up}, "growth_R" (batch_R_ms at the largest size over the size before), "back_ends":
+/// [{"name", "rows": [{"triangles", "setup_*", "frame_*", "factor_*", "solve_*" for F and R, in ms and cpu ms}],
+/// "exponents"}], "targets": {"triangles", "setup_ms", "frame_F_ms", "batch_R_ms", "peak_MB", "growth_R"},
+/// "verdict" (null when no size reaches the targets' 1M triangles; else, at the largest such size, "missed" when a
+/// target is, "met" when all are, "undecided" otherwise), "target_verdicts": [{"target", "limit", "measured" (the
+/// median), "range" (the runs' least and largest; for the growth, over every pairing of the two sizes' runs),
+/// "verdict" ("met" when every run meets the limit, "missed" when none does, else or without a range
+/// "undecided"), "cause" (when not met: where the time goes, from the run's own back-end rows)}] at that size,
+/// "figures" (the drawn cost curve, when `settings` draws figures)}; null when `bench_file` does not exist.
 nlohmann::json engine_scale(const std::filesystem::path& bench_file, const RunSettings& settings);
 
 }  // namespace affinterp::claims

@@ -327,6 +327,19 @@ void write_engine_speed(std::ostringstream& md, const json& speed) {
   md << "\n\n";
 }
 
+/// The scale table's verdict on all its targets (engine_scale.hpp's "verdict"), as a phrase.
+std::string scale_verdict_text(const json& verdict) {
+  if (!verdict.is_string()) return "not measured at that size";
+  const std::string v = verdict.get<std::string>();
+  return v == "met" ? "met" : v == "missed" ? "**not met**" : "undecided";
+}
+
+/// One scale target's verdict as a table cell: yes, **no**, or undecided.
+std::string target_verdict_cell(const json& verdict) {
+  const std::string v = verdict.is_string() ? verdict.get<std::string>() : "";
+  return v == "met" ? "yes" : v == "missed" ? "**no**" : "undecided";
+}
+
 /// How the engine's cost grows with the mesh against the 1M-triangle targets (bench_scale, one run), and each
 /// sparse back-end's factorisation and solve side by side.
 void write_engine_scale(std::ostringstream& md, const json& scale) {
@@ -343,7 +356,8 @@ void write_engine_scale(std::ostringstream& md, const json& scale) {
   };
   md << "`build/bin/bench_scale` on the generated man bent by a curl through one radian, meshed from 1k to 65k "
         "triangles and the 65k pair subdivided 1-to-4 once and twice (261k, 1M), with `affinterp interpolate`'s "
-        "default options; the median of three runs. Wall-clock times, the calling thread's CPU time in brackets; "
+        "default options; the median of five runs for the engine's rows (three for each back-end's). Wall-clock "
+        "times, the calling thread's CPU time in brackets; "
         "a batched frame is `vertices_at(times)` of 8 frames on the machine's cores, per frame; peak memory is the "
         "process's resident high-water mark over each size's benchmarks. The sparse back-end is the project's "
         "simplicial "
@@ -361,18 +375,24 @@ void write_engine_scale(std::ostringstream& md, const json& scale) {
      << fixed(target("triangles"), 0) << " triangles: set-up ≤ " << fixed(target("setup_ms"), 0) << " ms, E^F ≤ "
      << fixed(target("frame_F_ms"), 0) << " ms a frame, E^R ≤ " << fixed(target("batch_R_ms"), 0)
      << " ms a batched frame growing at most " << fixed(target("growth_R"), 0) << "× from the size before, peak ≤ "
-     << fixed(target("peak_MB"), 0) << " MB: "
-     << (!scale.value("met", json()).is_boolean() ? "not measured at that size"
-         : scale["met"].get<bool>()               ? "met"
-                                                  : "**not met**")
-     << " (E^R's batched frame grew " << fixed(scale.value("growth_R", json()), 1) << "× into the largest size).\n\n";
+     << fixed(target("peak_MB"), 0)
+     << " MB. A target is met when every run meets it, missed when none does, "
+        "undecided otherwise (with five runs their least and largest bracket the median of runs with probability "
+        "94%, whatever the runs' distribution; a growth's runs are every pairing of the two sizes'): "
+     << scale_verdict_text(scale.value("verdict", json())) << " (E^R's batched frame grew "
+     << fixed(scale.value("growth_R", json()), 1) << "× into the largest size).\n\n";
   if (!scale.value("target_verdicts", json::array()).empty()) {
     md << "| target at " << fixed(target("triangles"), 0)
-       << " triangles | limit | measured | met | where the time goes (when missed) |\n|---|---|---|---|---|\n";
-    for (const auto& v : scale["target_verdicts"])
+       << " triangles | limit | median | runs (least–largest) | met | where the time goes (when not met) |\n"
+          "|---|---|---|---|---|---|\n";
+    for (const auto& v : scale["target_verdicts"]) {
+      const json range = v.value("range", json());
       md << "| " << cell(v.value("target", "")) << " | " << fixed(v.value("limit", json()), 1) << " | "
-         << fixed(v.value("measured", json()), 1) << " | " << (v.value("met", false) ? "yes" : "**no**") << " | "
+         << fixed(v.value("measured", json()), 1) << " | "
+         << (range.is_array() ? fixed(range[0], 1) + "–" + fixed(range[1], 1) : std::string("—")) << " | "
+         << target_verdict_cell(v.value("verdict", json())) << " | "
          << cell(v.value("cause", json()).is_string() ? v["cause"].get<std::string>() : std::string("—")) << " |\n";
+    }
     md << "\n";
   }
   md << "| triangles | set-up E^F (ms) | set-up E^R (ms) | frame E^F (ms) | frame E^R (ms) | batched frame E^R (ms) "
