@@ -160,7 +160,7 @@ TEST(SpeedHistory, MergedProcessesAreRecordedOnce) {
   ASSERT_TRUE(run.has_value());
   EXPECT_EQ(run->machine["cpu"], "Test CPU");
   EXPECT_EQ(run->machine["cpu_flags"], "sse2 avx2");
-  EXPECT_EQ(run->id, "2026-02-01-test-cpu");
+  EXPECT_EQ(run->id, "2026-02-01-test-cpu-avx2");
   const bench::Figure& ratio = run->figures.at("eig3/eigen-qr ÷ eig3/viete");
   EXPECT_EQ(ratio.measured.processes, 2u);
   EXPECT_EQ(ratio.measured.repetitions, 20u);
@@ -171,7 +171,7 @@ TEST(SpeedHistory, MergedProcessesAreRecordedOnce) {
   // Not recorded yet: the files count as a run of their own; recorded: once, and a second record changes nothing.
   EXPECT_FALSE(bench::runs_of(dir).back().recorded);
   const fs::path file = bench::record(*run, dir / "history");
-  EXPECT_EQ(file.filename(), "2026-02-01-test-cpu.json");
+  EXPECT_EQ(file.filename(), "2026-02-01-test-cpu-avx2.json");
   EXPECT_EQ(bench::record(*run, dir / "history"), file);
   const std::vector<bench::RecordedRun> runs = bench::runs_of(dir);
   ASSERT_EQ(runs.size(), 1u);

@@ -1,5 +1,7 @@
 #include "experiments/bench/bench_results.hpp"
 
+#include "experiments/bench/machine_label.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -48,7 +50,8 @@ std::optional<BenchResults> read_bench_results(const std::filesystem::path& file
   BenchResults results;
   results.file = file;
   const auto& context = results.context = json.value("context", nlohmann::json::object());
-  results.machine = context.value("affinterp_cpu", "unknown (run a current bench executable)");
+  results.machine = machine_label(context.value("affinterp_cpu", nlohmann::json()),
+                                  context.value("affinterp_cpu_flags", nlohmann::json()));
   results.compiler = context.value("affinterp_compiler", "unknown");
   results.flags = context.value("affinterp_flags", "unknown");
   std::map<std::string, std::map<std::int64_t, std::vector<double>>> by_process;

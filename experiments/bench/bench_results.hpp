@@ -16,7 +16,7 @@ namespace affinterp::bench {
 
 struct BenchResults {
   std::filesystem::path file;
-  std::string machine;  ///< the CPU model recorded in the JSON context (bench_context.hpp)
+  std::string machine;  ///< the CPU model and its widest vector extension, from the JSON context (machine_label.hpp)
   std::string compiler, flags;
   nlohmann::json context;  ///< the file's whole "context" (machine, date, processes)
   /// Per benchmark name (without aggregate suffix): the median of `counter` over every repetition of every

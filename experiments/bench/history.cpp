@@ -1,5 +1,7 @@
 #include "experiments/bench/history.hpp"
 
+#include "experiments/bench/machine_label.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <fstream>
@@ -75,11 +77,10 @@ std::optional<RecordedRun> current_run(const fs::path& bench_dir, const std::str
     run->programs[std::string(program.name)] = {{"processes", dates.size()}, {"dates", dates}};
     run->figures.merge(speed_figures(program, *results));
   }
-  if (run) {  // <date>-<cpu>
-    const nlohmann::json& cpu = run->machine["cpu"];
+  if (run) {  // <date>-<cpu>-<widest vector extension>
     run->id = run->date.substr(0, 10);
     run->id += '-';
-    run->id += slug(cpu.is_string() ? cpu.get<std::string>() : "unknown");
+    run->id += slug(machine_label(run->machine["cpu"], run->machine["cpu_flags"]));
   }
   return run;
 }

@@ -1,5 +1,6 @@
 #include "experiments/claims/engine_speed.hpp"
 
+#include "experiments/bench/machine_label.hpp"
 #include "experiments/claims/speed_verdict.hpp"
 
 #include <map>
@@ -131,7 +132,8 @@ nlohmann::json engine_speed_by_run(const std::vector<bench::RecordedRun>& runs) 
       rows.push_back({{"run", run.id},
                       {"recorded", run.recorded},
                       {"date", run.date},
-                      {"cpu", run.machine.value("cpu", nlohmann::json())},
+                      {"cpu", bench::machine_label(run.machine.value("cpu", nlohmann::json()),
+                                                   run.machine.value("cpu_flags", nlohmann::json()))},
                       {"cores", run.machine.value("cores", nlohmann::json())},
                       {"energy", energy},
                       {"mesh", rest.substr(rest.find('/') + 1)},

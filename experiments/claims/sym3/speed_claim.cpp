@@ -1,5 +1,6 @@
 #include "experiments/claims/sym3/speed_claim.hpp"
 
+#include "experiments/bench/machine_label.hpp"
 #include "plots/figure.hpp"
 #include "plots/runs_against_band.hpp"
 
@@ -42,17 +43,7 @@ Outcome inconclusive(std::string summary, const std::string& method) {
 /// The widest vector extension among a run's CPU flags, or that they were not recorded.
 std::string vector_isa(const nlohmann::json& machine) {
   const nlohmann::json flags = machine.value("cpu_flags", nlohmann::json());
-  if (!flags.is_string()) return "CPU flags not recorded";
-  std::string list = " ";  // each flag between spaces
-  list += flags.get<std::string>();
-  list += ' ';
-  for (const char* isa : {"avx512f", "avx2", "avx", "sse4_2"}) {
-    std::string flag = " ";
-    flag += isa;
-    flag += ' ';
-    if (list.find(flag) != std::string::npos) return isa;
-  }
-  return "no AVX";
+  return flags.is_string() ? bench::widest_vector_isa(flags.get<std::string>()) : "CPU flags not recorded";
 }
 
 std::string text_of(const nlohmann::json& value) {

@@ -1,0 +1,17 @@
+#include "experiments/bench/machine_label.hpp"
+
+namespace affinterp::bench {
+
+std::string widest_vector_isa(const std::string& flags) {
+  const std::string list = " " + flags + " ";  // each flag between spaces
+  for (const char* isa : {"avx512f", "avx2", "avx", "sse4_2"})
+    if (list.find(" " + std::string(isa) + " ") != std::string::npos) return isa;
+  return "no AVX";
+}
+
+std::string machine_label(const nlohmann::json& cpu, const nlohmann::json& flags) {
+  const std::string name = cpu.is_string() ? cpu.get<std::string>() : "unknown (run a current bench executable)";
+  return flags.is_string() ? name + ", " + widest_vector_isa(flags.get<std::string>()) : name;
+}
+
+}  // namespace affinterp::bench

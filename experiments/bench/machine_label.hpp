@@ -1,0 +1,20 @@
+#pragma once
+// The machine a benchmark ran on, named so that two machines a table mixes up can be told apart: virtual
+// machines often report a bare "AMD EPYC" for Zen 3 (AVX2) and Zen 4 (AVX-512) alike, whose speeds differ by
+// up to 2× on the same binary, so the name carries the widest vector extension among the CPU's flags.
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace affinterp::bench {
+
+/// The widest vector extension among `flags` (/proc/cpuinfo's list, space-separated): "avx512f", "avx2", "avx",
+/// "sse4_2" or "no AVX".
+std::string widest_vector_isa(const std::string& flags);
+
+/// "<cpu>, <widest vector extension>" from the CPU's model name and flags as a benchmark file's context records
+/// them (affinterp_cpu, affinterp_cpu_flags; experiments/apps/bench/bench_context.cpp), or "<cpu>" alone where
+/// the flags were not recorded (null).
+std::string machine_label(const nlohmann::json& cpu, const nlohmann::json& flags);
+
+}  // namespace affinterp::bench
