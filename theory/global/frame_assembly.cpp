@@ -68,7 +68,7 @@ std::pair<double, double> local_error_value(Energy energy, const TriangleTerm& t
     return {0.0, term.weight * similarity_residual(X, Y)};
   }
   const Eigen::Matrix2d B = V * term.D;  // eq. (1)
-  const double w = energy == Energy::blend ? term.frobenius_share : energy == Energy::frobenius ? 1.0 : 0.0;
+  const double w = detail::frobenius_share(energy, term.frobenius_share);
   const double frobenius = w > 0 ? w * frobenius_error(A, B) : 0.0;
   const double similarity = w < 1 ? (1 - w) * similarity_residual(A, B) : 0.0;
   return {term.weight * frobenius, term.weight * similarity};
