@@ -75,7 +75,7 @@ struct RunsDecision {
 RunsDecision decide_runs(const std::vector<bench::RecordedRun>& runs, const std::vector<Reading>& readings,
                          const std::string& title);
 
-/// "2026-11-23 Intel Xeon": a run's date and its CPU without trademark signs.
+/// "2026-11-27 AMD EPYC, avx2": a run's date and its machine (bench::machine_label) without trademark signs.
 std::string run_label(const bench::RecordedRun& run);
 
 /// "reproduced on both recorded runs (…)": what the runs together say, naming each run's verdict.
