@@ -100,18 +100,18 @@ TEST(EngineScale, TheLargestSizeBeyondAMillionDecidesTheTargets) {
   EXPECT_EQ(table["rows"][1]["setup_R_range"], nlohmann::json({2880.0 * 0.98, 2880.0 * 1.02}));
   EXPECT_EQ(table["rows"][1]["batch_R_range"], nlohmann::json({550.0 * 0.98, 550.0 * 1.02}));
   EXPECT_EQ(table["rows"][1]["peak_MB_range"], nlohmann::json({1900.0 * 0.98, 1900.0 * 1.02}));
-  EXPECT_EQ(table["verdict"], "met");
+  EXPECT_EQ(table["verdict"], "reproduced");
   EXPECT_EQ(table["machine"], "test cpu");
   EXPECT_TRUE(table["figures"].empty()) << "no figure without a figure folder";
 
   file = write_bench(two_sizes(small, size(1045216, 3100, 90, 550, 1900)));
-  EXPECT_EQ(engine_scale(file, RunSettings{})["verdict"], "missed") << "E^R's set-up above 3 s";
+  EXPECT_EQ(engine_scale(file, RunSettings{})["verdict"], "not-reproduced") << "E^R's set-up above 3 s";
   file = write_bench(two_sizes(small, size(1045216, 2400, 90, 700, 1900)));
-  EXPECT_EQ(engine_scale(file, RunSettings{})["verdict"], "missed") << "E^R above 600 ms a batched frame";
+  EXPECT_EQ(engine_scale(file, RunSettings{})["verdict"], "not-reproduced") << "E^R above 600 ms a batched frame";
   file = write_bench(two_sizes(size(261304, 600, 20, 100, 300), size(1045216, 2400, 90, 550, 1900)));
-  EXPECT_EQ(engine_scale(file, RunSettings{})["verdict"], "missed") << "E^R grew 5.5 times";
+  EXPECT_EQ(engine_scale(file, RunSettings{})["verdict"], "not-reproduced") << "E^R grew 5.5 times";
   file = write_bench(two_sizes(small, size(1045216, 2400, 90, 550, 2100)));
-  EXPECT_EQ(engine_scale(file, RunSettings{})["verdict"], "missed") << "peak above 2 GB";
+  EXPECT_EQ(engine_scale(file, RunSettings{})["verdict"], "not-reproduced") << "peak above 2 GB";
 
   file = write_bench(size(261304, 700, 20, 150, 300));
   EXPECT_TRUE(engine_scale(file, RunSettings{})["verdict"].is_null()) << "not measured at 1M";
@@ -127,13 +127,13 @@ TEST(EngineScale, EachTargetIsDecidedAloneAndAMissSaysWhereTheTimeGoes) {
   const fs::path file = write_bench(two_sizes(size(261304, 600, 20, 150, 300), large));
   const nlohmann::json table = engine_scale(file, RunSettings{});
   fs::remove(file);
-  EXPECT_EQ(table["verdict"], "missed");
+  EXPECT_EQ(table["verdict"], "not-reproduced");
   const nlohmann::json& verdicts = table["target_verdicts"];
   ASSERT_EQ(verdicts.size(), 6u);
   for (const auto& v : verdicts) {
     const std::string target = v["target"];
     const bool setup = target.starts_with("set-up");
-    EXPECT_EQ(v["verdict"], setup ? "missed" : "met") << target;
+    EXPECT_EQ(v["verdict"], setup ? "not-reproduced" : "reproduced") << target;
     EXPECT_EQ(v["cause"].is_string(), setup) << target << ": a cause exactly when missed";
   }
   EXPECT_EQ(verdicts[0]["target"], "set-up E^F");
@@ -149,11 +149,11 @@ TEST(EngineScale, RunsOnBothSidesOfATargetLeaveItUndecided) {
   const fs::path file = write_bench(two_sizes(size(261304, 600, 20, 110, 300), size(1045216, 2400, 100, 550, 1900)));
   const nlohmann::json table = engine_scale(file, RunSettings{});
   fs::remove(file);
-  EXPECT_EQ(table["verdict"], "undecided");
+  EXPECT_EQ(table["verdict"], "inconclusive");
   for (const auto& v : table["target_verdicts"]) {
     const std::string target = v["target"];
     const bool straddles = target == "E^F frame" || target.find("growth") != std::string::npos;
-    EXPECT_EQ(v["verdict"], straddles ? "undecided" : "met") << target;
+    EXPECT_EQ(v["verdict"], straddles ? "inconclusive" : "reproduced") << target;
     EXPECT_EQ(v["cause"].is_string(), straddles) << target << ": a cause whenever it is not met";
   }
   EXPECT_EQ(table["target_verdicts"][2]["range"], nlohmann::json({98.0, 102.0}));
@@ -172,7 +172,7 @@ TEST(EngineScale, MediansWithoutTheirRunsDecideNothing) {
   const fs::path file = write_bench(benchmarks);
   const nlohmann::json table = engine_scale(file, RunSettings{});
   fs::remove(file);
-  EXPECT_EQ(table["verdict"], "undecided");
+  EXPECT_EQ(table["verdict"], "inconclusive");
   EXPECT_TRUE(table["rows"][1]["setup_F_range"].is_null());
   EXPECT_EQ(table["rows"][1]["setup_F_ms"], 10.0);
 }

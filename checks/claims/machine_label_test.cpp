@@ -21,6 +21,9 @@ TEST(MachineLabel, JoinsTheModelAndItsVectorExtension) {
   EXPECT_EQ(machine_label("AMD EPYC", "fpu avx avx2"), "AMD EPYC, avx2");
   EXPECT_EQ(machine_label("AMD EPYC", nullptr), "AMD EPYC") << "an older file without the flags";
   EXPECT_EQ(machine_label(nullptr, nullptr), "unknown (run a current bench executable)");
+  EXPECT_EQ(machine_label(nlohmann::json{{"cpu", "AMD EPYC"}, {"cpu_flags", "avx avx2"}, {"cores", 2}}),
+            "AMD EPYC, avx2")
+      << "a recorded run's machine";
 }
 
 }  // namespace

@@ -80,7 +80,7 @@ std::optional<RecordedRun> current_run(const fs::path& bench_dir, const std::str
   if (run) {  // <date>-<cpu>-<widest vector extension>
     run->id = run->date.substr(0, 10);
     run->id += '-';
-    run->id += slug(machine_label(run->machine["cpu"], run->machine["cpu_flags"]));
+    run->id += slug(machine_label(run->machine));
   }
   return run;
 }

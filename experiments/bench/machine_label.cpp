@@ -14,4 +14,8 @@ std::string machine_label(const nlohmann::json& cpu, const nlohmann::json& flags
   return flags.is_string() ? name + ", " + widest_vector_isa(flags.get<std::string>()) : name;
 }
 
+std::string machine_label(const nlohmann::json& machine) {
+  return machine_label(machine.value("cpu", nlohmann::json()), machine.value("cpu_flags", nlohmann::json()));
+}
+
 }  // namespace affinterp::bench

@@ -16,5 +16,7 @@ std::string widest_vector_isa(const std::string& flags);
 /// them (affinterp_cpu, affinterp_cpu_flags; experiments/apps/bench/bench_context.cpp), or "<cpu>" alone where
 /// the flags were not recorded (null).
 std::string machine_label(const nlohmann::json& cpu, const nlohmann::json& flags);
+/// machine_label of a recorded run's machine (history.hpp's RecordedRun::machine: "cpu", "cpu_flags").
+std::string machine_label(const nlohmann::json& machine);
 
 }  // namespace affinterp::bench

@@ -2,6 +2,7 @@
 
 #include "experiments/bench/bench_results.hpp"
 #include "experiments/bench/power_law.hpp"
+#include "experiments/claims/speed_verdict.hpp"
 #include "plots/engine_scale_curve.hpp"
 #include "theory/global/sparse_factor.hpp"
 
@@ -26,14 +27,15 @@ constexpr double fit_from_triangles = 60'000;
 /// Frames per batch_frames iteration (bench_scale.cpp).
 constexpr double batch_frames = 8;
 
-/// A target against the spread of its runs, [least, largest]: met when every run meets it, missed when none
-/// does, undecided otherwise or without a spread. With five i.i.d. runs the least and the largest bracket the
-/// median of runs with probability 1 − 2 · 2⁻⁵ ≈ 94%, whatever their distribution (order statistics), so a
-/// verdict does not flip with the machine's noise as one on the median alone does.
-std::string verdict_on_runs(const nlohmann::json& range, double limit) {
-  if (!range.is_array()) return "undecided";
-  if (range[1].get<double>() <= limit) return "met";
-  return range[0].get<double>() > limit ? "missed" : "undecided";
+/// A target "at most `limit`" against the spread of its runs, [least, largest], by the speed tables' interval rule
+/// (speed_verdict.hpp): reproduced (met) when every run meets it, not-reproduced (missed) when none does,
+/// inconclusive otherwise or without a spread. With five i.i.d. runs the least and the largest bracket the median
+/// of runs with probability 1 − 2 · 2⁻⁵ ≈ 94%, whatever their distribution (order statistics), so a verdict does
+/// not flip with the machine's noise as one on the median alone does.
+Verdict verdict_on_runs(const nlohmann::json& range, double limit) {
+  return verdict_of(
+      range.is_array() ? std::optional(Interval{range[0].get<double>(), range[1].get<double>()}) : std::nullopt,
+      {-kUnbounded, limit});
 }
 
 /// The least and the largest of a benchmark's runs (every repetition of every process) times `scale`; null with
@@ -154,7 +156,11 @@ nlohmann::json back_end_row(const nlohmann::json& back_ends, const std::string& 
 /// Each target alone at the largest size `r` of `rows` (≥ 1M triangles): what was measured (the median of runs),
 /// the spread of the runs, the verdict on that spread and, when it is not met, where the time goes by the run's own
 /// rows of `back_end` (the engine's at this size).
-nlohmann::json target_verdicts(const nlohmann::json& rows, std::size_t r, const nlohmann::json& growth_R,
+struct TargetVerdicts {
+  nlohmann::json targets;  ///< one entry per target
+  Verdict all;             ///< all_of their verdicts
+};
+TargetVerdicts target_verdicts(const nlohmann::json& rows, std::size_t r, const nlohmann::json& growth_R,
                                const nlohmann::json& back_ends, const std::string& back_end,
                                const nlohmann::json& back_end_exponents) {
   const nlohmann::json& row = rows[r];
@@ -163,15 +169,17 @@ nlohmann::json target_verdicts(const nlohmann::json& rows, std::size_t r, const 
     return parts.is_null() ? nlohmann::json() : parts.value(key, nlohmann::json());
   };
   nlohmann::json verdicts = nlohmann::json::array();
+  std::vector<Verdict> each;
   const auto add = [&](const std::string& target, const nlohmann::json& measured, const nlohmann::json& range,
                        double limit, std::string cause) {
-    const std::string verdict = verdict_on_runs(range, limit);
-    verdicts.push_back({{"target", target},
-                        {"limit", limit},
-                        {"measured", measured},
-                        {"range", range},
-                        {"verdict", verdict},
-                        {"cause", verdict == "met" ? nlohmann::json() : nlohmann::json(std::move(cause))}});
+    const Verdict verdict = each.emplace_back(verdict_on_runs(range, limit));
+    verdicts.push_back(
+        {{"target", target},
+         {"limit", limit},
+         {"measured", measured},
+         {"range", range},
+         {"verdict", to_string(verdict)},
+         {"cause", verdict == Verdict::reproduced ? nlohmann::json() : nlohmann::json(std::move(cause))}});
   };
   const auto range = [&](const std::string& key) { return row.value(key + "_range", nlohmann::json()); };
   for (const char* energy : {"F", "R"}) {
@@ -207,7 +215,7 @@ nlohmann::json target_verdicts(const nlohmann::json& rows, std::size_t r, const 
       r > 0 ? quotient_spread(range("batch_R"), rows[r - 1].value("batch_R_range", nlohmann::json())) : nullptr,
       growth_R_target, growth_cause);
   add("peak memory (MB)", row["peak_MB"], range("peak_MB"), peak_target_MB, "the factors and the frames' workspaces");
-  return verdicts;
+  return {verdicts, all_of(each)};
 }
 
 }  // namespace
@@ -279,12 +287,10 @@ nlohmann::json engine_scale(const std::filesystem::path& bench_file, const RunSe
     if (r > 0 && rows[r - 1]["batch_R_ms"].is_number() && row["batch_R_ms"].is_number())
       growth_R = row["batch_R_ms"].get<double>() / rows[r - 1]["batch_R_ms"].get<double>();
     if (row["triangles"].get<double>() >= target_triangles) {
-      verdicts = target_verdicts(rows, r, growth_R, back_ends, engine_back_end, engine_back_end_exponents);
-      const auto any = [&](const char* v) {
-        return std::any_of(verdicts.begin(), verdicts.end(),
-                           [v](const nlohmann::json& t) { return t["verdict"] == v; });
-      };
-      verdict = any("missed") ? "missed" : any("undecided") ? "undecided" : "met";
+      const TargetVerdicts decided =
+          target_verdicts(rows, r, growth_R, back_ends, engine_back_end, engine_back_end_exponents);
+      verdicts = decided.targets;
+      verdict = to_string(decided.all);
     }
   }
   nlohmann::json scale = {

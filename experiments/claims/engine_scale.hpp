@@ -22,11 +22,12 @@ namespace affinterp::claims {
 /// "exponents_from_triangles" up}, "growth_R" (batch_R_ms at the largest size over the size before), "back_ends":
 /// [{"name", "rows": [{"triangles", "setup_*", "frame_*", "factor_*", "solve_*" for F and R, in ms and cpu ms}],
 /// "exponents"}], "targets": {"triangles", "setup_ms", "frame_F_ms", "batch_R_ms", "peak_MB", "growth_R"},
-/// "verdict" (null when no size reaches the targets' 1M triangles; else, at the largest such size, "missed" when a
-/// target is, "met" when all are, "undecided" otherwise), "target_verdicts": [{"target", "limit", "measured" (the
-/// median), "range" (the runs' least and largest; for the growth, over every pairing of the two sizes' runs),
-/// "verdict" ("met" when every run meets the limit, "missed" when none does, else or without a range
-/// "undecided"), "cause" (when not met: where the time goes, from the run's own back-end rows)}] at that size,
+/// "verdict" (null when no size reaches the targets' 1M triangles; else, at the largest such size, all_of the
+/// targets' verdicts, speed_verdict.hpp), "target_verdicts": [{"target", "limit", "measured" (the median), "range"
+/// (the runs' least and largest; for the growth, over every pairing of the two sizes' runs), "verdict" (the speed
+/// tables' interval rule on the range against "at most limit": "reproduced", met, when every run meets it,
+/// "not-reproduced" when none does, else or without a range "inconclusive"), "cause" (when not met: where the time
+/// goes, from the run's own back-end rows)}] at that size,
 /// "figures" (the drawn cost curve, when `settings` draws figures)}; null when `bench_file` does not exist.
 nlohmann::json engine_scale(const std::filesystem::path& bench_file, const RunSettings& settings);
 

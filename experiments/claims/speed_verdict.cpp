@@ -12,9 +12,9 @@ nlohmann::json bound(double x) { return std::isfinite(x) ? nlohmann::json(x) : n
 
 }  // namespace
 
-Verdict verdict_of(const Measured& m, Interval band) {
-  if (!m.ci95) return Verdict::inconclusive;
-  switch (bench::placement(*m.ci95, band)) {
+Verdict verdict_of(const std::optional<Interval>& interval, Interval band) {
+  if (!interval) return Verdict::inconclusive;
+  switch (bench::placement(*interval, band)) {
     case bench::Placement::inside:
       return Verdict::reproduced;
     case bench::Placement::outside:

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <initializer_list>
+#include <optional>
 #include <span>
 #include <string_view>
 
@@ -21,8 +22,10 @@ using bench::Measured;
 using bench::measured_median;
 using bench::measured_ratio;
 
-/// reproduced / not-reproduced / inconclusive from where the interval lies against `band`.
-Verdict verdict_of(const Measured& m, Interval band);
+/// reproduced / not-reproduced / inconclusive from where `interval` lies against `band` (inconclusive without one).
+Verdict verdict_of(const std::optional<Interval>& interval, Interval band);
+/// verdict_of the figure's 95% interval.
+inline Verdict verdict_of(const Measured& m, Interval band) { return verdict_of(m.ci95, band); }
 /// The verdict of several figures read together: reproduced if all are, not-reproduced if any is, else
 /// inconclusive.
 Verdict all_of(std::initializer_list<Verdict> verdicts);

@@ -332,19 +332,6 @@ void write_engine_speed(std::ostringstream& md, const json& speed) {
   md << "\n\n";
 }
 
-/// The scale table's verdict on all its targets (engine_scale.hpp's "verdict"), as a phrase.
-std::string scale_verdict_text(const json& verdict) {
-  if (!verdict.is_string()) return "not measured at that size";
-  const std::string v = verdict.get<std::string>();
-  return v == "met" ? "met" : v == "missed" ? "**not met**" : "undecided";
-}
-
-/// One scale target's verdict as a table cell: yes, **no**, or undecided.
-std::string target_verdict_cell(const json& verdict) {
-  const std::string v = verdict.is_string() ? verdict.get<std::string>() : "";
-  return v == "met" ? "yes" : v == "missed" ? "**no**" : "undecided";
-}
-
 /// How the engine's cost grows with the mesh against the 1M-triangle targets (bench_scale, one run), and each
 /// sparse back-end's factorisation and solve side by side.
 void write_engine_scale(std::ostringstream& md, const json& scale) {
@@ -384,8 +371,9 @@ void write_engine_scale(std::ostringstream& md, const json& scale) {
      << " MB. A target is met when every run meets it, missed when none does, "
         "undecided otherwise (with five runs their least and largest bracket the median of runs with probability "
         "94%, whatever the runs' distribution; a growth's runs are every pairing of the two sizes'): "
-     << scale_verdict_text(scale.value("verdict", json())) << " (E^R's batched frame grew "
-     << fixed(scale.value("growth_R", json()), 1) << "× into the largest size).\n\n";
+     << (scale.value("verdict", json()).is_string() ? "targets met: " + met_cell(scale["verdict"])
+                                                    : std::string("not measured at that size"))
+     << " (E^R's batched frame grew " << fixed(scale.value("growth_R", json()), 1) << "× into the largest size).\n\n";
   if (!scale.value("target_verdicts", json::array()).empty()) {
     md << "| target at " << fixed(target("triangles"), 0)
        << " triangles | limit | median | runs (least–largest) | met | where the time goes (when not met) |\n"
@@ -395,7 +383,7 @@ void write_engine_scale(std::ostringstream& md, const json& scale) {
       md << "| " << cell(v.value("target", "")) << " | " << fixed(v.value("limit", json()), 1) << " | "
          << fixed(v.value("measured", json()), 1) << " | "
          << (range.is_array() ? fixed(range[0], 1) + "–" + fixed(range[1], 1) : std::string("—")) << " | "
-         << target_verdict_cell(v.value("verdict", json())) << " | "
+         << met_cell(v.value("verdict", json())) << " | "
          << cell(v.value("cause", json()).is_string() ? v["cause"].get<std::string>() : std::string("—")) << " |\n";
     }
     md << "\n";

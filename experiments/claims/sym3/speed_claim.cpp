@@ -138,8 +138,7 @@ std::variant<std::vector<bench::RecordedRun>, Outcome> load_runs(const RunSettin
 }
 
 std::string run_label(const bench::RecordedRun& run) {
-  std::string cpu = bench::machine_label(run.machine.value("cpu", nlohmann::json()),
-                                         run.machine.value("cpu_flags", nlohmann::json()));
+  std::string cpu = bench::machine_label(run.machine);
   for (const char* noise : {"(R)", "(TM)", " Processor", " CPU"})
     for (std::size_t at; (at = cpu.find(noise)) != std::string::npos;) cpu.erase(at, std::string_view(noise).size());
   return run.date.substr(0, 10) + " " + cpu;
