@@ -13,7 +13,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace affinterp::certified {
+namespace affinterp::certified::families_test {
 namespace {
 
 using sym3::Family;
@@ -148,4 +148,4 @@ TEST(CertifiedFamilies, FarApartFamilyIsDecided) {
 }
 
 }  // namespace
-}  // namespace affinterp::certified
+}  // namespace affinterp::certified::families_test

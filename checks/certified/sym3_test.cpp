@@ -10,7 +10,7 @@
 #include <cmath>
 #include <limits>
 
-namespace affinterp::certified {
+namespace affinterp::certified::sym3_test {
 namespace {
 
 using sym3::Mat3R100;
@@ -220,4 +220,4 @@ TEST(CertifiedSym3, ErrorBallsOfDoubleResults) {
 }
 
 }  // namespace
-}  // namespace affinterp::certified
+}  // namespace affinterp::certified::sym3_test

@@ -11,7 +11,7 @@
 #include <numbers>
 #include <vector>
 
-namespace affinterp::bench {
+namespace affinterp::bench::bootstrap_test {
 namespace {
 
 /// n draws from the normal distribution N(mu, sigma²) (Box–Muller).
@@ -115,4 +115,4 @@ TEST(Bootstrap, PlacementAgainstABand) {
 }
 
 }  // namespace
-}  // namespace affinterp::bench
+}  // namespace affinterp::bench::bootstrap_test

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-namespace affinterp::claims::sym3 {
+namespace affinterp::claims::sym3::certified_score_test {
 namespace {
 
 TEST(CertifiedScore, CertifiesTheErrorOfAnInexactResult) {
@@ -56,4 +56,4 @@ TEST(CertifiedScore, AnErrorBelowTheBallsResolutionIsExcluded) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::sym3
+}  // namespace affinterp::claims::sym3::certified_score_test

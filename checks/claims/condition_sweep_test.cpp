@@ -10,7 +10,7 @@
 
 #include <tuple>
 
-namespace affinterp::claims::local {
+namespace affinterp::claims::local::condition_sweep_test {
 namespace {
 
 using affinterp::local::Mat2;
@@ -82,4 +82,4 @@ TEST(ConditionSweep, KeepsTheSimplestDisagreement) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::local
+}  // namespace affinterp::claims::local::condition_sweep_test

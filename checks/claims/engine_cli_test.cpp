@@ -11,7 +11,7 @@
 #include <fstream>
 #include <string>
 
-namespace affinterp::claims {
+namespace affinterp::claims::engine_cli_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -65,4 +65,4 @@ TEST(EngineCli, IsNotMeasuredWithoutItsFile) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::engine_cli_test

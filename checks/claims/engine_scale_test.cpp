@@ -13,7 +13,7 @@
 
 #include <unistd.h>
 
-namespace affinterp::claims {
+namespace affinterp::claims::engine_scale_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -195,4 +195,4 @@ TEST(EngineScale, DrawsTheCostCurve) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::engine_scale_test

@@ -10,7 +10,7 @@
 #include <fstream>
 #include <string>
 
-namespace affinterp::claims {
+namespace affinterp::claims::engine_speed_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -139,4 +139,4 @@ TEST(EngineSpeed, AbsentBenchmarkIsSaidInTheReport) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::engine_speed_test

@@ -13,6 +13,8 @@
 #include <set>
 #include <sstream>
 
+namespace engine_test {
+
 using namespace affinterp;
 using namespace affinterp::claims;
 using affinterp::exact::Mat2Q;
@@ -177,3 +179,5 @@ TEST(StagedOutput, CommitsOnSuccessAndLeavesEarlierOutputsOtherwise) {
   EXPECT_TRUE(fs::exists(target / "keep.txt"));
   fs::remove_all(target);
 }
+
+}  // namespace engine_test

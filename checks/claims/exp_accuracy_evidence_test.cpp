@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-namespace affinterp::claims {
+namespace affinterp::claims::exp_accuracy_evidence_test {
 namespace {
 
 const Outcome& outcome() {
@@ -59,4 +59,4 @@ TEST(ExpAccuracyEvidence, PeerTableCoversEveryFamilyAndAlgorithm) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::exp_accuracy_evidence_test

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace affinterp::claims {
+namespace affinterp::claims::full_size_test {
 namespace {
 
 /// The IDs of the local chapter's claims.
@@ -33,4 +33,4 @@ INSTANTIATE_TEST_SUITE_P(Local, FullSize, testing::ValuesIn(local_claims()),
                          [](const testing::TestParamInfo<std::string>& info) { return file_stem(info.param); });
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::full_size_test

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-namespace affinterp::claims {
+namespace affinterp::claims::ginac_values_test {
 namespace {
 
 TEST(GinacValues, ARationalFunctionOfTheOriginHasOneText) {
@@ -24,4 +24,4 @@ TEST(GinacValues, AnythingElseAsGinacPrintsIt) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::ginac_values_test

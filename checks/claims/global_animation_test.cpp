@@ -9,7 +9,7 @@
 #include <fstream>
 #include <sstream>
 
-namespace affinterp::claims::global_figures {
+namespace affinterp::claims::global_figures::global_animation_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -39,4 +39,4 @@ TEST(GlobalFigures, DrawAViewerBesideEachAnimation) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::global_figures
+}  // namespace affinterp::claims::global_figures::global_animation_test

@@ -7,7 +7,7 @@
 
 #include <string>
 
-namespace affinterp::claims {
+namespace affinterp::claims::identity_proofs_test {
 namespace {
 
 Outcome run(const std::string& id) {
@@ -74,4 +74,4 @@ INSTANTIATE_TEST_SUITE_P(Claims, FailsAsPrinted,
                                          "thesis.sd.case3"));
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::identity_proofs_test

@@ -13,7 +13,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
-namespace affinterp::claims::local {
+namespace affinterp::claims::local::local_formulas_test {
 namespace {
 
 using affinterp::local::Mat2;
@@ -105,4 +105,4 @@ TEST(LocalFormulas, ThePointsCoverBothOutcomes) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::local
+}  // namespace affinterp::claims::local::local_formulas_test

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-namespace affinterp::bench {
+namespace affinterp::bench::machine_label_test {
 namespace {
 
 TEST(MachineLabel, NamesTheWidestVectorExtensionAmongTheFlags) {
@@ -27,4 +27,4 @@ TEST(MachineLabel, JoinsTheModelAndItsVectorExtension) {
 }
 
 }  // namespace
-}  // namespace affinterp::bench
+}  // namespace affinterp::bench::machine_label_test

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-namespace affinterp::claims {
+namespace affinterp::claims::pinned_test {
 namespace {
 
 struct Pin {
@@ -134,4 +134,4 @@ INSTANTIATE_TEST_SUITE_P(Claims, PinnedVerdict, testing::ValuesIn(pin_file().pin
                          [](const testing::TestParamInfo<Pin>& info) { return file_stem(info.param.id); });
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::pinned_test

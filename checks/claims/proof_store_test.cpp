@@ -8,7 +8,7 @@
 
 #include <sstream>
 
-namespace affinterp::claims {
+namespace affinterp::claims::proof_store_test {
 namespace {
 
 TEST(ProofStore, EveryPlannedDeciderRunHasAStoredAnswerForTheSentenceAsBuiltToday) {
@@ -31,4 +31,4 @@ TEST(ProofStore, EveryPlannedDeciderRunHasAStoredAnswerForTheSentenceAsBuiltToda
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::proof_store_test

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-namespace affinterp::claims {
+namespace affinterp::claims::proof_strength_test {
 namespace {
 
 using proofs::Proof;
@@ -51,4 +51,4 @@ TEST(ProofStrength, AFormulationOfStructuralSentencesProvesNothing) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::proof_strength_test

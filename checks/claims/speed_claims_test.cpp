@@ -11,7 +11,7 @@
 #include <map>
 #include <string>
 
-namespace affinterp::claims {
+namespace affinterp::claims::speed_claims_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -173,4 +173,4 @@ TEST(SpeedClaims, ApplicationWithoutMeshDataIsInconclusive) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::speed_claims_test

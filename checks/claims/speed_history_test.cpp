@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace affinterp::claims {
+namespace affinterp::claims::speed_history_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -201,4 +201,4 @@ TEST(SpeedHistory, EngineTargetsAreDecidedRunByRun) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims
+}  // namespace affinterp::claims::speed_history_test

@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-namespace affinterp::global {
+namespace affinterp::global::frame_assembly_test {
 namespace {
 
 std::vector<Eigen::Matrix2d> linear_parts(const Mesh& from, const Mesh& to) {
@@ -101,4 +101,4 @@ TEST(RotationBranch, DualGraphListsTheTrianglesAcrossEachEdgeInOrder) {
 }
 
 }  // namespace
-}  // namespace affinterp::global
+}  // namespace affinterp::global::frame_assembly_test

@@ -8,7 +8,7 @@
 
 #include <random>
 
-namespace affinterp::global {
+namespace affinterp::global::frame_energy_test {
 namespace {
 
 /// vᵀGv + vᵀu + c of the frame's dense form (Kaji Appendix), at the vertices `v`.
@@ -75,4 +75,4 @@ TEST(FrameEnergy, RefusesAFrameOfAnotherMesh) {
 }
 
 }  // namespace
-}  // namespace affinterp::global
+}  // namespace affinterp::global::frame_energy_test

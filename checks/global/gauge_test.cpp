@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-namespace affinterp::global {
+namespace affinterp::global::gauge_test {
 namespace {
 
 /// Three counter-clockwise triangles (0,1,2), (1,3,2), (1,4,3) on p = (0,0), (1,0), (0,1), (1,1), (3,0).
@@ -93,4 +93,4 @@ TEST(DefaultEdgeDirection, MakesASimilarityInvariantEnergyWellPosed) {
 }
 
 }  // namespace
-}  // namespace affinterp::global
+}  // namespace affinterp::global::gauge_test

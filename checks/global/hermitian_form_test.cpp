@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
-namespace affinterp::global {
+namespace affinterp::global::hermitian_form_test {
 namespace {
 
 using exact::Rational;
@@ -89,4 +89,4 @@ TEST(HermitianForm, RealifiedIsTheBlockFormOfH) {
 }
 
 }  // namespace
-}  // namespace affinterp::global
+}  // namespace affinterp::global::hermitian_form_test

@@ -13,7 +13,7 @@
 #include <thread>
 #include <vector>
 
-namespace affinterp::global {
+namespace affinterp::global::interpolation_test {
 namespace {
 
 using testing::bent;
@@ -146,7 +146,7 @@ RC_GTEST_PROP(Interpolation, RandomTargetsMatchDenseMinimiser, ()) {
 }
 
 }  // namespace
-}  // namespace affinterp::global
+}  // namespace affinterp::global::interpolation_test
 
 namespace affinterp::global {
 namespace {

@@ -13,7 +13,7 @@
 
 #include <vector>
 
-namespace affinterp::global {
+namespace affinterp::global::ldl_subtrees_test {
 namespace {
 
 /// Two paths of `length` vertices (0 … length − 1 and length … 2 length − 1), each end joined to the three
@@ -114,4 +114,4 @@ TEST(PostorderedAmd, KeepsAmdsFillAndGivesATreeToSplit) {
 }
 
 }  // namespace
-}  // namespace affinterp::global
+}  // namespace affinterp::global::ldl_subtrees_test

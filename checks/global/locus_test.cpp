@@ -7,7 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
-namespace affinterp::global {
+namespace affinterp::global::locus_test {
 namespace {
 
 /// 2 … 7 points with small integer coordinates.
@@ -56,4 +56,4 @@ TEST(Locus, RefusesTooFewOrNonFinitePoints) {
 }
 
 }  // namespace
-}  // namespace affinterp::global
+}  // namespace affinterp::global::locus_test

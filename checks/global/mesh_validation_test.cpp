@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-namespace affinterp::global {
+namespace affinterp::global::mesh_validation_test {
 namespace {
 
 using testing::unit_square;
@@ -82,4 +82,4 @@ TEST(MeshValidation, TheEngineRefusesAnInvalidPairWithInvalidMesh) {
 }
 
 }  // namespace
-}  // namespace affinterp::global
+}  // namespace affinterp::global::mesh_validation_test

@@ -10,6 +10,8 @@
 
 #include <cmath>
 
+namespace metrics_test {
+
 namespace {
 
 using namespace affinterp::global;
@@ -54,3 +56,5 @@ TEST(FrameMetrics, CountFlipsAndCollapses) {
 }
 
 }  // namespace
+
+}  // namespace metrics_test

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-namespace affinterp::global {
+namespace affinterp::global::scale_heavy_test {
 namespace {
 
 TEST(ScaleHeavy, MillionTriangleSpiralInterpolatesWithEveryEnergy) {
@@ -24,4 +24,4 @@ TEST(ScaleHeavy, MillionTriangleSpiralInterpolatesWithEveryEnergy) {
 }
 
 }  // namespace
-}  // namespace affinterp::global
+}  // namespace affinterp::global::scale_heavy_test

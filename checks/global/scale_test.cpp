@@ -11,7 +11,7 @@
 
 #include <vector>
 
-namespace affinterp::global {
+namespace affinterp::global::scale_test {
 namespace {
 
 using testing::box_size;
@@ -147,4 +147,4 @@ TEST(Scale, BackEndsRefuseASingularMatrix) {
 }
 
 }  // namespace
-}  // namespace affinterp::global
+}  // namespace affinterp::global::scale_test

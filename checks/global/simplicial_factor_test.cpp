@@ -12,7 +12,7 @@
 #include <random>
 #include <vector>
 
-namespace affinterp::global {
+namespace affinterp::global::simplicial_factor_test {
 namespace {
 
 /// A side × side grid's Laplacian, its edges weighted by random complex (or real) numbers of modulus about 1,
@@ -125,4 +125,4 @@ TYPED_TEST(SimplicialFactorTest, ReadsAMatrixNotCompressed) {
 }
 
 }  // namespace
-}  // namespace affinterp::global
+}  // namespace affinterp::global::simplicial_factor_test

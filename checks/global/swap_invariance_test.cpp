@@ -11,7 +11,7 @@
 #include <algorithm>
 #include <numbers>
 
-namespace affinterp::global {
+namespace affinterp::global::swap_invariance_test {
 namespace {
 
 /// The options `affinterp interpolate --symmetric` uses by default (area weights, the straight barycentre
@@ -76,4 +76,4 @@ TEST(SwapInvariance, HoldsBeyondHalfATurn) {
 }
 
 }  // namespace
-}  // namespace affinterp::global
+}  // namespace affinterp::global::swap_invariance_test

@@ -9,7 +9,7 @@
 #include <limits>
 #include <utility>
 
-namespace affinterp::sym3 {
+namespace affinterp::sym3::affinelib_exp_sym_test {
 namespace {
 
 using Mat3 = Eigen::Matrix3d;
@@ -57,4 +57,4 @@ TEST(AffineLibExpSym, OverflowsWhereExpSIsFinite) {
 }
 
 }  // namespace
-}  // namespace affinterp::sym3
+}  // namespace affinterp::sym3::affinelib_exp_sym_test

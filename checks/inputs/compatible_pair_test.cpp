@@ -10,7 +10,7 @@
 
 #include <cmath>
 
-namespace affinterp::io {
+namespace affinterp::io::compatible_pair_test {
 namespace {
 
 const std::string outlines = std::string(AFFINTERP_SOURCE_DIR) + "/checks/inputs/outlines/";
@@ -131,4 +131,4 @@ TEST(ResampleOutline, EqualArcLengthFromVertexZero) {
 }
 
 }  // namespace
-}  // namespace affinterp::io
+}  // namespace affinterp::io::compatible_pair_test

@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <fstream>
 
+namespace constraint_spec_test {
+
 namespace {
 
 using namespace affinterp;
@@ -84,3 +86,5 @@ TEST(ConstraintSpec, WeightsFileOneNumberPerLine) {
 }
 
 }  // namespace
+
+}  // namespace constraint_spec_test

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace affinterp::sym3 {
+namespace affinterp::sym3::families_test {
 namespace {
 
 TEST(Families, AreDeterministicAndSymmetric) {
@@ -52,4 +52,4 @@ TEST(Families, ThesisDistributionIsPositiveSemidefinite) {
 }
 
 }  // namespace
-}  // namespace affinterp::sym3
+}  // namespace affinterp::sym3::families_test

@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <fstream>
 
+namespace mesh_file_test {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -135,3 +137,5 @@ TEST(MeshFile, ReadsTheSharedMeshesWhenPresent) {
 }
 
 }  // namespace
+
+}  // namespace mesh_file_test

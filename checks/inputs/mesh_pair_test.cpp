@@ -10,6 +10,8 @@
 
 #include <limits>
 
+namespace mesh_pair_test {
+
 namespace {
 
 using namespace affinterp;
@@ -91,3 +93,5 @@ TEST(MeshPair, FlippedTargetTrianglesAreRefusedUnlessAllowed) {
 }
 
 }  // namespace
+
+}  // namespace mesh_pair_test

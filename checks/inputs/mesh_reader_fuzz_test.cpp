@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+namespace mesh_reader_fuzz_test {
+
 namespace {
 
 using affinterp::Rng;
@@ -90,3 +92,5 @@ TEST(MeshReaderFuzz, SeedsParse) {
 }
 
 }  // namespace
+
+}  // namespace mesh_reader_fuzz_test

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
-namespace affinterp::io {
+namespace affinterp::io::polygon_soup_file_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -66,4 +66,4 @@ TEST(PolygonSoupFile, RefusesWithOneLine) {
 }
 
 }  // namespace
-}  // namespace affinterp::io
+}  // namespace affinterp::io::polygon_soup_file_test

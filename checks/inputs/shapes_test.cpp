@@ -15,6 +15,8 @@
 #include <numbers>
 #include <set>
 
+namespace shapes_test {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -146,3 +148,5 @@ TEST(Shapes, FilmstripsDraw) {
 }
 
 }  // namespace
+
+}  // namespace shapes_test

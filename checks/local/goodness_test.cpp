@@ -9,7 +9,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace affinterp::local {
+namespace affinterp::local::goodness_test {
 namespace {
 
 using exact::Rational;
@@ -180,4 +180,4 @@ TEST(QuadraticSurd, RunsTheDecidersOfTheThesisExample) {
 }
 
 }  // namespace
-}  // namespace affinterp::local
+}  // namespace affinterp::local::goodness_test

@@ -6,7 +6,7 @@
 
 #include <numbers>
 
-namespace affinterp::local {
+namespace affinterp::local::library_test {
 namespace {
 
 using exact::Rational;
@@ -160,4 +160,4 @@ TEST(Homotopies, InstantiateOverReal50) {
 }
 
 }  // namespace
-}  // namespace affinterp::local
+}  // namespace affinterp::local::library_test

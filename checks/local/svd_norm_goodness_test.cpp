@@ -15,7 +15,7 @@
 #include <numbers>
 #include <stdexcept>
 
-namespace affinterp::local {
+namespace affinterp::local::svd_norm_goodness_test {
 namespace {
 
 using exact::Rational;
@@ -90,4 +90,4 @@ TEST(SvdNormSampling, FindsTheQuarterTurnFailure) {
 }
 
 }  // namespace
-}  // namespace affinterp::local
+}  // namespace affinterp::local::svd_norm_goodness_test

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+namespace condition_parser_test {
+
 using namespace affinterp::logic;
 
 namespace {
@@ -68,3 +70,5 @@ RC_GTEST_PROP(ConditionParser, AgreesWithDirectEvaluation, (int va, int vb, int 
   RC_ASSERT(at("det > tr^2/4 - 1", va, vb, vc, vd) == (det > tr * tr / 4 - 1));
   RC_ASSERT(at("a*d - b*c = det and tr = a + d", va, vb, vc, vd));
 }
+
+}  // namespace condition_parser_test

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+namespace formula_test {
+
 using namespace affinterp::logic;
 
 namespace {
@@ -65,3 +67,5 @@ RC_GTEST_PROP(Formula, NegationNormalFormKeepsTheTruthValue, (int a, int b, int 
   RC_ASSERT(holds(negation_normal_form(f), at) == holds(f, at));
   RC_ASSERT(holds(prenex(f).matrix, at) == holds(f, at));
 }
+
+}  // namespace formula_test

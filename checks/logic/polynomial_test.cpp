@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+namespace polynomial_test {
+
 using namespace affinterp::logic;
 
 namespace {
@@ -41,3 +43,5 @@ RC_GTEST_PROP(Polynomial, EvaluationIsARingHomomorphism, (int a, int b, int c, i
   RC_ASSERT((p - q).evaluate(at) == p.evaluate(at) - q.evaluate(at));
   RC_ASSERT(pow(p, 3).evaluate(at) == p.evaluate(at) * p.evaluate(at) * p.evaluate(at));
 }
+
+}  // namespace polynomial_test

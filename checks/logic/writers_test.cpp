@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+namespace writers_test {
+
 using namespace affinterp::logic;
 
 namespace {
@@ -43,3 +45,5 @@ TEST(SmtlibInput, QuantifierFreeAndQuantifiedLogics) {
             "(check-sat)\n");
   EXPECT_THROW(to_smtlib(greater(x, 0), "free"), std::invalid_argument);
 }
+
+}  // namespace writers_test

@@ -7,6 +7,8 @@
 
 #include "checks/origin/rational_gen.hpp"
 
+namespace affine_frames_test {
+
 using namespace affinterp::origin;
 
 namespace {
@@ -53,3 +55,5 @@ TEST(TranslateOrigin, WritesAMapAboutTheOriginO) {
   const GiNaC::matrix o = column(5, -2), p = column(7, 3);
   EXPECT_TRUE(is_zero_matrix(apply(translate_origin(A, o.mul_scalar(-1)), p.sub(o)).sub(apply(A, p).sub(o))));
 }
+
+}  // namespace affine_frames_test

@@ -10,6 +10,8 @@
 
 #include <stdexcept>
 
+namespace energy_test {
+
 using namespace affinterp::origin;
 using affinterp::origin::testing::origin_substitution;
 
@@ -72,3 +74,5 @@ RC_GTEST_PROP(OriginStudy, TheStationaryPointIsTheMinimum,
   }
   RC_ASSERT(GiNaC::ex_to<GiNaC::numeric>(E.subs(moved) - m.value).is_positive());
 }
+
+}  // namespace energy_test

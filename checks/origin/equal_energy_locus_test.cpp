@@ -5,6 +5,8 @@
 
 #include <stdexcept>
 
+namespace equal_energy_locus_test {
+
 using namespace affinterp::origin;
 
 namespace {
@@ -51,3 +53,5 @@ TEST(SmallRationalPoints, FindsPointsThatLieOnTheCurve) {
   EXPECT_TRUE(small_rational_points(x() * x() + y() * y() + 1, 10).empty());
   EXPECT_THROW(small_rational_points(y() * y() * y(), 1), std::invalid_argument);
 }
+
+}  // namespace equal_energy_locus_test

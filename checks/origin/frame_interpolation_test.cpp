@@ -11,6 +11,8 @@
 
 #include <cmath>
 
+namespace frame_interpolation_test {
+
 using namespace affinterp::origin;
 
 namespace {
@@ -62,3 +64,5 @@ TEST(GlobalInterpolation, StartsAtTheSourceAndEndsAtTheExactMinimiser) {
       }
   }
 }
+
+}  // namespace frame_interpolation_test

@@ -9,6 +9,8 @@
 
 #include "checks/origin/rational_gen.hpp"
 
+namespace origin_dependence_test {
+
 using namespace affinterp::origin;
 using affinterp::origin::testing::origin_substitution;
 
@@ -80,3 +82,5 @@ RC_GTEST_PROP(OriginDependence, NoOriginsLetThePrintedTargetsBeMetExactly,
   // A1 and A2 disagree on the shared edge, so no intermediate configuration has E2 = 0.
   RC_ASSERT(GiNaC::ex_to<GiNaC::numeric>(min_E2(thesis_study().config, column(x1, y1), column(x2, y2))).is_positive());
 }
+
+}  // namespace origin_dependence_test

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+namespace atlas_test {
+
 using namespace affinterp::proofs;
 using affinterp::exact::Rational;
 
@@ -45,3 +47,5 @@ TEST(Atlas, EightCellsWithTheirVariables) {
   EXPECT_EQ(atlas_cell(Homotopy::exp_log, Notion::area).id(), "exp-log.area");
   EXPECT_FALSE(suite_says_good(atlas_cell(Homotopy::svd, Notion::norm), {{"x", 1}, {"y", 2}, {"beta", 0}}));
 }
+
+}  // namespace atlas_test

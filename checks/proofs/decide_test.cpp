@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+namespace decide_test {
+
 using namespace affinterp::proofs;
 using affinterp::exact::Rational;
 
@@ -58,3 +60,5 @@ TEST(Decide, LinearNormInSymmetricSkewCoordinates) {
   EXPECT_TRUE(v.counterexample->property);
   EXPECT_TRUE(v.counterexample->checked_by_suite);
 }
+
+}  // namespace decide_test

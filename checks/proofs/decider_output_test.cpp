@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+namespace decider_output_test {
+
 using namespace affinterp::proofs;
 using affinterp::exact::Rational;
 
@@ -160,3 +162,5 @@ TEST(WithoutTimings, DropsTheLinesThatVaryRunToRun) {
                             "49386547 Cells in AVAIL, 50000000 Cells in SPACE.\nSystem time: 306 milliseconds.\n"),
             "FALSE\n49386547 Cells in AVAIL, 50000000 Cells in SPACE.\n");
 }
+
+}  // namespace decider_output_test

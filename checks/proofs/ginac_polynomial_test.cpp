@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-namespace affinterp::proofs {
+namespace affinterp::proofs::ginac_polynomial_test {
 namespace {
 
 TEST(GinacPolynomial, ExpandsWithTheoryLogicsArithmetic) {
@@ -21,4 +21,4 @@ TEST(GinacPolynomial, RefusesWhatIsNotAPolynomial) {
 }
 
 }  // namespace
-}  // namespace affinterp::proofs
+}  // namespace affinterp::proofs::ginac_polynomial_test

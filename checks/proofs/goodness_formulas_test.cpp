@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
-namespace affinterp::proofs {
+namespace affinterp::proofs::goodness_formulas_test {
 namespace {
 
 using affinterp::local::Mat2;
@@ -46,4 +46,4 @@ RC_GTEST_PROP(GoodnessFormulas, AreaLevelEIsDefinition221, ()) {
 }
 
 }  // namespace
-}  // namespace affinterp::proofs
+}  // namespace affinterp::proofs::goodness_formulas_test

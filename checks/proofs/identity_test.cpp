@@ -12,7 +12,7 @@
 #include <fstream>
 #include <sstream>
 
-namespace affinterp::proofs {
+namespace affinterp::proofs::identity_test {
 namespace {
 
 const GiNaC::symbol x("x"), y("y"), z("z");
@@ -129,4 +129,4 @@ TEST(Identity, RefusesTwoSymbolsOfOneName) {
 }
 
 }  // namespace
-}  // namespace affinterp::proofs
+}  // namespace affinterp::proofs::identity_test

@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-namespace affinterp::proofs {
+namespace affinterp::proofs::lemma_identities_test {
 namespace {
 
 using GiNaC::ex;
@@ -308,4 +308,4 @@ TEST(LemmaIdentities, EveryCommittedScriptIsBuiltHere) {
 }
 
 }  // namespace
-}  // namespace affinterp::proofs
+}  // namespace affinterp::proofs::lemma_identities_test

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+namespace proof_test {
+
 using namespace affinterp::proofs;
 
 namespace {
@@ -53,3 +55,5 @@ TEST(Formulation, AFormulationNoDeciderCanBeGivenIsRecordedWithItsReason) {
   EXPECT_TRUE(attempts[0].tool.empty());
   EXPECT_EQ(attempts[0].outcome, "transcendental in t");
 }
+
+}  // namespace proof_test

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+namespace structural_test {
+
 using namespace affinterp::logic;
 using affinterp::proofs::is_structural;
 
@@ -26,3 +28,5 @@ TEST(Structural, ASentenceEmptyForItsPolynomialsIsNot) {
   EXPECT_FALSE(is_structural(exists({"x"}, less(x * x, 0))));
   EXPECT_FALSE(is_structural(exists({"x", "y"}, greater(p, 0) && (less_equal(p, 0) || greater(x, 2)))));
 }
+
+}  // namespace structural_test

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+namespace subprocess_test {
+
 using namespace affinterp::proofs;
 
 TEST(RunProcess, CapturesOutputAndStatus) {
@@ -37,3 +39,5 @@ TEST(RunProcess, MissingProgram) {
   const ProcessResult r = run_process({"affinterp-no-such-decider"}, {}, {});
   EXPECT_TRUE(r.not_found);
 }
+
+}  // namespace subprocess_test

@@ -11,6 +11,8 @@
 
 #include <unistd.h>
 
+namespace transcript_test {
+
 using namespace affinterp::proofs;
 namespace fs = std::filesystem;
 
@@ -114,3 +116,5 @@ TEST(StoredTranscripts, EveryCommittedTranscriptAnswersTheInputBesideIt) {
   }
   EXPECT_GT(transcripts, 0);
 }
+
+}  // namespace transcript_test

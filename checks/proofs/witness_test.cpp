@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+namespace witness_test {
+
 using namespace affinterp::proofs;
 using affinterp::exact::Rational;
 using affinterp::logic::Point;
@@ -45,3 +47,5 @@ TEST(ShrinkWitness, SimplePointsFirst) {
   const auto shrunk = shrink_witness({{"a", Rational(3, 7)}, {"d", Rational(7, 3)}}, holds, {{{"a", 1}, {"d", 1}}});
   EXPECT_EQ(shrunk, (Point{{"a", 1}, {"d", 1}}));
 }
+
+}  // namespace witness_test

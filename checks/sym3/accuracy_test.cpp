@@ -20,7 +20,7 @@
 #include <utility>
 #include <vector>
 
-namespace affinterp::sym3 {
+namespace affinterp::sym3::accuracy_test {
 namespace {
 
 constexpr std::size_t draws_per_family = 10;
@@ -200,4 +200,4 @@ TEST(Sym3Accuracy, FullRangeFamilyAgainstCertifiedReferences) {
 #endif
 
 }  // namespace
-}  // namespace affinterp::sym3
+}  // namespace affinterp::sym3::accuracy_test

@@ -18,7 +18,7 @@
 #include <sstream>
 #include <vector>
 
-namespace affinterp::sym3 {
+namespace affinterp::sym3::full_range_test {
 namespace {
 
 constexpr double kEps = 0x1p-53;
@@ -268,4 +268,4 @@ TEST(Sym3FullRange, ExamplesFromTheIssue) {
 }
 
 }  // namespace
-}  // namespace affinterp::sym3
+}  // namespace affinterp::sym3::full_range_test

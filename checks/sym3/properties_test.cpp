@@ -11,7 +11,7 @@
 #include <iomanip>
 #include <vector>
 
-namespace affinterp::sym3 {
+namespace affinterp::sym3::properties_test {
 namespace {
 
 /// Symmetric matrices with entries on a grid of step 1/1000 in [−bound, bound].
@@ -83,4 +83,4 @@ TEST(Sym3Properties, RepeatedEigenvaluesNeedNoSpecialCase) {
 }
 
 }  // namespace
-}  // namespace affinterp::sym3
+}  // namespace affinterp::sym3::properties_test

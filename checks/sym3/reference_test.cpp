@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-namespace affinterp::sym3 {
+namespace affinterp::sym3::reference_test {
 namespace {
 
 using exact::Real100;
@@ -45,4 +45,4 @@ TEST(Sym3Reference, JacobiFindsKnownEigenvalues) {
 }
 
 }  // namespace
-}  // namespace affinterp::sym3
+}  // namespace affinterp::sym3::reference_test
