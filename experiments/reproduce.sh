@@ -14,6 +14,8 @@ for a in "$@"; do
 done
 bash "$root/experiments/setup.sh"
 cli="$root/build/bin/affinterp"
+echo "==> building the benchmarks"
+cmake --build "$root/build" --target benchmarks -j "$(nproc)"
 
 # The one check too slow for CI's 15 minutes: every installed header compiled on its own (checks/README.md).
 echo "==> compiling every installed header on its own (ctest -L headers)"
