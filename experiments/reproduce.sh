@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The main job: set up, check that every installed header compiles on its own, run the benchmarks, decide the proofs' sentences whose stored answers are missing or
-# stale, decide every claim at full size, draw the figures, and write reports/claims.json and
-# reports/REPORT.md. Outputs are replaced only when a step succeeds.
+# The main job: set up, build the benchmarks, check that every installed header compiles on its own, run the
+# benchmarks, decide the proofs' sentences whose stored answers are missing or stale, decide every claim at full
+# size, draw the figures, and write reports/claims.json and reports/REPORT.md. Outputs are replaced only when a
+# step succeeds.
 #   --reprove   re-decide every committed sentence first (QEPCAD B, Z3) and fail if any answer differs from
 #               the committed one (reports/proofs/); without it only missing or stale answers are decided.
 # Other arguments go to `affinterp claims` (e.g. --only ID, --seed N).
