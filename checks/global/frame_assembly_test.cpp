@@ -1,6 +1,6 @@
 // The engine's assembly at scale (theory/global/frame_assembly.hpp, rotation_branch.hpp): the sparsity
 // pattern built from the vertex stars holds exactly the vertex pairs of the triangles and the sparse
-// constraint terms, the right-hand side is the same bits on any number of threads, and the dual graph lists
+// constraint terms, H(t) and the right-hand side are the same bits on any number of threads, and the dual graph lists
 // each triangle's neighbours as its definition says.
 #include "theory/global/frame_assembly.hpp"
 #include "checks/global/strip.hpp"
@@ -74,6 +74,31 @@ TEST(FrameAssembly, RightHandSideIsTheSameOnAnyNumberOfThreads) {
       const Eigen::VectorXcd alone = assembly.right_hand_side_at(t, 1);
       for (const std::size_t threads : {2, 3, 7})
         EXPECT_TRUE(assembly.right_hand_side_at(t, threads) == alone) << to_string(energy) << " t " << t;
+    }
+  }
+}
+
+TEST(FrameAssembly, MatrixIsTheSameOnAnyNumberOfThreads) {
+  const auto [P, Q] = shapes::random_pair(13, 300);
+  for (const Energy energy : {Energy::similarity, Energy::procrustes, Energy::blend}) {
+    InterpolationOptions options;
+    options.energy = energy;
+    options.symmetric = true;
+    options.constraints.barycentre = BarycentreLocus{};  // grounded: column 0 zeroed after the sums
+    const auto A = linear_parts(P, Q), B = linear_parts(Q, P);
+    const Eigen::VectorXd theta = consistent_theta(P, A);
+    const LocalPaths forward(A, options.homotopy, theta), reverse(B, options.homotopy, -theta);
+    const FrameAssembly assembly(P, Q, options, forward, &reverse,
+                                 constraint_terms(options.constraints, P, Q, forward));
+    FrameAssembly::SparseMatrix alone = assembly.pattern(), H = assembly.pattern();
+    for (const double t : {0.0, 0.3, 1.0}) {
+      assembly.matrix_at(t, alone, 1);
+      for (const std::size_t threads : {2, 3, 7}) {
+        assembly.matrix_at(t, H, threads);
+        EXPECT_TRUE(Eigen::Map<const Eigen::VectorXcd>(H.valuePtr(), H.nonZeros()) ==
+                    Eigen::Map<const Eigen::VectorXcd>(alone.valuePtr(), alone.nonZeros()))
+            << to_string(energy) << " t " << t << " threads " << threads;
+      }
     }
   }
 }

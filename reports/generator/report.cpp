@@ -258,7 +258,7 @@ std::string frame_parts_cell(const json& parts) {
   if (!parts.is_object()) return "—";
   std::string cell;
   for (const auto& [key, name] : {std::pair{"factor_ms", "numeric factorisation"},
-                                  {"assembly_ms", "assembly of H(t) (on one thread)"},
+                                  {"assembly_ms", "assembly of H(t)"},
                                   {"right_hand_side_ms", "right-hand side"},
                                   {"solve_ms", "solve"}})
     if (parts.value(key, json()).is_number())

@@ -52,8 +52,9 @@ class FrameAssembly {
   const SparseMatrix& pattern() const { return pattern_; }
   /// Writes the lower triangle of H(t) without the dense term, grounded at vertex 0 when dense_term() says
   /// so (column 0's off-diagonal entries zero: sparse_minimiser.hpp), into the values of `H`, which has the
-  /// structure of pattern(): one matrix serves every frame.
-  void matrix_at(double t, SparseMatrix& H) const;
+  /// structure of pattern(): one matrix serves every frame. The triangles' terms are computed on `threads`
+  /// threads (the same H whatever their number).
+  void matrix_at(double t, SparseMatrix& H, std::size_t threads = 1) const;
   /// −ũ(t)/2, so that H z = −ũ/2 at the minimiser; computed on `threads` threads (the same vector whatever
   /// their number: parallel_ranges.hpp).
   Eigen::VectorXcd right_hand_side_at(double t, std::size_t threads = 1) const;

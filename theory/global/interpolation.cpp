@@ -103,10 +103,10 @@ struct Interpolation::Engine {
     xy << b.real(), b.imag();
     return fixed.solve(xy, threads).transpose();
   }
-  /// v(t) at a t in range, when H(t) changes with A_i(t): a numeric factorisation per frame in `work`, it and
-  /// the solve on up to `threads` threads.
+  /// v(t) at a t in range, when H(t) changes with A_i(t): a numeric factorisation per frame in `work`, H(t)'s
+  /// assembly, the factorisation and the solve on up to `threads` threads.
   Eigen::Matrix2Xd frame_in(Workspace& work, double t, std::size_t threads) const {
-    assembly->matrix_at(t, work.H);
+    assembly->matrix_at(t, work.H, threads);
     work.minimiser.factorise(work.H, threads);
     const Eigen::VectorXcd z = work.minimiser.solve(assembly->right_hand_side_at(t, threads), threads);
     Eigen::Matrix2Xd v(2, z.size());

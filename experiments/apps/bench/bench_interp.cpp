@@ -105,7 +105,7 @@ void frames_batched(benchmark::State& state, Energy energy) {
 }
 
 /// The parts of a frame as vertices_at(t) runs them, on the engine's back-end for the size and the threads it gives
-/// a frame (parallel_ranges.hpp; H(t)'s assembly on one): what a frame's time is made of. Where H(t) changes with t
+/// a frame (parallel_ranges.hpp): what a frame's time is made of. Where H(t) changes with t
 /// (E^R), its assembly, numeric factorisation and solve; where it does not (E^F), the right-hand side and the solve
 /// of its two real columns.
 enum class FramePart { right_hand_side, assembly, factorisation, solve };
@@ -135,7 +135,7 @@ void frame_part(benchmark::State& state, Energy energy, FramePart part) {
   for (auto _ : state) {
     const double t = (k++ % 60 + 0.5) / 60;
     if (part == FramePart::right_hand_side) benchmark::DoNotOptimize(assembly.right_hand_side_at(t, threads).data());
-    if (part == FramePart::assembly) assembly.matrix_at(t, H);
+    if (part == FramePart::assembly) assembly.matrix_at(t, H, threads);
     if (part == FramePart::factorisation) minimiser.factorise(H, threads);
     if (part == FramePart::solve && assembly.isotropic()) benchmark::DoNotOptimize(fixed.solve(xy, threads).data());
     if (part == FramePart::solve && !assembly.isotropic()) benchmark::DoNotOptimize(minimiser.solve(b, threads).data());
