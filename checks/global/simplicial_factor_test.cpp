@@ -1,7 +1,8 @@
 // Our up-looking LDLᴴ (theory/global/simplicial_factor.hpp, ldl_symbolic.hpp) against Eigen's SimplicialLDLT on
 // Hermitian positive definite grids, real and complex: the same solution to rounding, the same factor on one
 // thread and on two (rows of two groups of subtrees side by side), the upper triangle ignored, a singular or
-// indefinite matrix refused, and nothing of a refused factorisation left in the next one.
+// indefinite matrix refused, and nothing of a refused factorisation left in the next one; two matrices of one
+// pattern factorised in one pass (factorise_two) give the factors each gives alone, bit for bit.
 #include "theory/global/simplicial_factor.hpp"
 
 #include <gtest/gtest.h>
@@ -9,6 +10,7 @@
 #include <Eigen/SparseCholesky>
 
 #include <complex>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -122,6 +124,45 @@ TYPED_TEST(SimplicialFactorTest, ReadsAMatrixNotCompressed) {
   ASSERT_TRUE(reference.factorise(K, 1));
   const Block<Scalar> B = right_hand_sides<Scalar>(K.rows());
   EXPECT_EQ(solved(factor, B, 1), solved(reference, B, 1));
+}
+
+TYPED_TEST(SimplicialFactorTest, FactorisesTwoInOnePassAsEachAlone) {
+  using Scalar = TypeParam;
+  const Eigen::SparseMatrix<Scalar> K = grid<Scalar>(24, 0.01, 7), K_other = grid<Scalar>(24, 0.3, 8);  // one pattern
+  const Block<Scalar> B = right_hand_sides<Scalar>(K.rows());
+  SimplicialFactor<Scalar> alone;
+  alone.analyse(K);
+  ASSERT_TRUE(alone.factorise(K, 2));
+  const Block<Scalar> expected = solved(alone, B, 1);
+  ASSERT_TRUE(alone.factorise(K_other, 1));
+  const Block<Scalar> expected_other = solved(alone, B, 1);
+
+  SimplicialFactor<Scalar> factor;
+  factor.analyse(K);
+  const std::unique_ptr<SparseFactor<Scalar>> other = factor.clone();  // shares the analysis: one pass
+  ASSERT_TRUE(factor.two_in_one_pass());
+  for (int pass = 0; pass < 2; ++pass) {  // the second reuses the first's rows, which must come back clean
+    ASSERT_TRUE(factor.factorise_two(K, *other, K_other));
+    EXPECT_EQ(solved(factor, B, 1), expected);
+    Block<Scalar> X = B;
+    other->solve_in_place(X, 2);
+    EXPECT_EQ(X, expected_other);
+  }
+  SimplicialFactor<Scalar> analysed_apart;  // not sharing the analysis: one after the other, the same factors
+  analysed_apart.analyse(K);
+  ASSERT_TRUE(factor.factorise_two(K_other, analysed_apart, K));
+  EXPECT_EQ(solved(analysed_apart, B, 1), expected);
+  EXPECT_EQ(solved(factor, B, 1), expected_other);
+
+  Eigen::SparseMatrix<Scalar> singular = K;  // vertex 5 cut off: refused, whichever of the two it is
+  for (typename Eigen::SparseMatrix<Scalar>::InnerIterator it(singular, 5); it; ++it) {
+    it.valueRef() = 0;
+    singular.coeffRef(5, it.index()) = 0;
+  }
+  EXPECT_FALSE(factor.factorise_two(K, *other, singular));
+  EXPECT_FALSE(factor.factorise_two(singular, *other, K));
+  ASSERT_TRUE(factor.factorise_two(K, *other, K_other));
+  EXPECT_EQ(solved(factor, B, 1), expected);
 }
 
 }  // namespace

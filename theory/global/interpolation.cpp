@@ -10,6 +10,7 @@
 #include "theory/global/well_posedness.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <exception>
@@ -88,7 +89,7 @@ struct Interpolation::Engine {
         : H(std::move(matrix)), minimiser(std::move(factored)) {}
     Workspace(const Workspace& other) : H(other.H), minimiser(other.minimiser) {}
   };
-  /// The frames' workspaces: [0] that of vertices_at(t), [0, W) those of the batch call's W workers, kept
+  /// The frames' workspaces: [0] that of vertices_at(t), [0, W) those of the batch call (one or two a worker), kept
   /// for the next batch. They are the only state a frame changes, hence mutable; each is guarded by its
   /// mutex, the list (which a batch may lengthen) by its own, and the first stays where it is.
   mutable std::vector<std::unique_ptr<Workspace>> workspaces;
@@ -108,6 +109,18 @@ struct Interpolation::Engine {
   Eigen::Matrix2Xd frame_in(Workspace& work, double t, std::size_t threads) const {
     assembly->matrix_at(t, work.H, threads);
     work.minimiser.factorise(work.H, threads);
+    return solution_in(work, t, threads);
+  }
+  /// v(a) and v(b) on one thread, H(a) and H(b) factorised in one pass (SparseMinimiser::factorise_two) in the
+  /// workspaces `at_a` and `at_b`: the frames that frame_in gives.
+  std::array<Eigen::Matrix2Xd, 2> frames_in(Workspace& at_a, Workspace& at_b, double a, double b) const {
+    assembly->matrix_at(a, at_a.H);
+    assembly->matrix_at(b, at_b.H);
+    at_a.minimiser.factorise_two(at_a.H, at_b.minimiser, at_b.H);
+    return {solution_in(at_a, a, 1), solution_in(at_b, b, 1)};
+  }
+  /// v(t) with H(t) factorised in `work`.
+  Eigen::Matrix2Xd solution_in(const Workspace& work, double t, std::size_t threads) const {
     const Eigen::VectorXcd z = work.minimiser.solve(assembly->right_hand_side_at(t, threads), threads);
     Eigen::Matrix2Xd v(2, z.size());
     v << z.real().transpose(), z.imag().transpose();  // z_k = v_kx + i v_ky
@@ -212,26 +225,43 @@ std::vector<Eigen::Matrix2Xd> Interpolation::vertices_at(const std::vector<doubl
   for (const double t : times) engine.require_in_range(t);
   std::vector<Eigen::Matrix2Xd> frames(times.size());
   const bool isotropic = engine.assembly->isotropic();
-  std::size_t workers = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), times.size());
+  // Where the back-end factorises two frames in one pass (SparseFactor::factorise_two), a worker takes two frames
+  // at a time, in two workspaces
+  std::size_t per_worker = 1;
+  double bytes = 1;
+  if (!isotropic) {
+    const std::lock_guard lock(engine.first_workspace->mutex);
+    const SparseFactor<std::complex<double>>& factor = engine.first_workspace->minimiser.factor();
+    if (factor.two_in_one_pass() && times.size() > 1) per_worker = 2;
+    bytes = std::max(bytes, factor.factor_bytes());
+  }
+  std::size_t workers = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()),
+                                              (times.size() + per_worker - 1) / per_worker);
   std::vector<Engine::Workspace*> workspaces;
-  if (!isotropic) {  // a workspace per worker, their factors within workspace_bytes
-    double bytes = 1;
-    {
-      const std::lock_guard lock(engine.first_workspace->mutex);
-      bytes = std::max(bytes, engine.first_workspace->minimiser.factor().factor_bytes());
-    }
-    workers = std::min(workers, static_cast<std::size_t>(std::max(1.0, std::floor(workspace_bytes / bytes))));
-    workspaces = engine.reserve_workspaces(workers);
+  if (!isotropic) {  // per_worker workspaces a worker, their factors within workspace_bytes
+    workers = std::min(workers, static_cast<std::size_t>(std::max(
+                                    1.0, std::floor(workspace_bytes / (bytes * static_cast<double>(per_worker))))));
+    workspaces = engine.reserve_workspaces(workers * per_worker);
   }
   std::atomic<std::size_t> next{0};
   std::exception_ptr failure;
   std::mutex failure_mutex;
-  auto work = [&](std::size_t w) {  // worker w takes the next frame, in workspace w
+  auto work = [&](std::size_t w) {  // worker w takes the next frames, in workspaces [w per_worker, (w + 1) per_worker)
     try {
-      std::unique_lock<std::mutex> lock;
-      if (!isotropic) lock = std::unique_lock(workspaces[w]->mutex);
-      for (std::size_t k; (k = next++) < times.size();)
-        frames[k] = isotropic ? engine.isotropic_frame(times[k], 1) : engine.frame_in(*workspaces[w], times[k], 1);
+      std::vector<std::unique_lock<std::mutex>> locks;
+      Engine::Workspace* mine[2] = {nullptr, nullptr};
+      if (!isotropic)
+        for (std::size_t j = 0; j < per_worker; ++j)
+          mine[j] = workspaces[w * per_worker + j], locks.emplace_back(mine[j]->mutex);
+      for (std::size_t k; (k = next.fetch_add(per_worker)) < times.size();) {
+        if (isotropic)
+          frames[k] = engine.isotropic_frame(times[k], 1);
+        else if (per_worker == 2 && k + 1 < times.size()) {
+          auto [a, b] = engine.frames_in(*mine[0], *mine[1], times[k], times[k + 1]);
+          frames[k] = std::move(a), frames[k + 1] = std::move(b);
+        } else
+          frames[k] = engine.frame_in(*mine[0], times[k], 1);
+      }
     } catch (...) {
       const std::lock_guard lock(failure_mutex);
       if (!failure) failure = std::current_exception();

@@ -44,7 +44,8 @@ class Interpolation {
   Eigen::Matrix2Xd vertices_at(double t) const;
   /// v(t) for each of `times`, in their order: the same vertices as vertices_at(t) one after another,
   /// computed in parallel by one worker per hardware thread. When G depends on t each worker refactorises
-  /// in a workspace of its own, as many workers as keep their factors within 1.25 GiB together; the object
+  /// in a workspace of its own (two frames at a time in two, factorised in one pass, where the sparse back-end
+  /// can: SparseFactor::factorise_two), as many workers as keep their factors within 1.25 GiB together; the object
   /// keeps the workspaces for its next batch. Throws as vertices_at(t) does; a time out of range before any
   /// frame is computed.
   std::vector<Eigen::Matrix2Xd> vertices_at(const std::vector<double>& times) const;

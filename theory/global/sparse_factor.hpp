@@ -35,6 +35,15 @@ class SparseFactor {
   /// can (the same factor whatever their number). False when K is not numerically positive definite: a pivot
   /// not above 10⁻¹² times the largest (a ratio, so whatever the mesh's units or size).
   virtual bool factorise(const SparseMatrix& K, std::size_t threads) = 0;
+  /// K into this factor and K_other (same pattern) into `other`, a clone of this one, on one thread: true when
+  /// both are positive definite. Each is the factor that factorise gives; a back-end that can do the two in one
+  /// pass does (simplicial_factor.hpp), the others one after the other.
+  virtual bool factorise_two(const SparseMatrix& K, SparseFactor& other, const SparseMatrix& K_other) {
+    const bool first = factorise(K, 1);
+    return other.factorise(K_other, 1) && first;
+  }
+  /// Whether factorise_two does the two in one pass, faster than one after the other.
+  virtual bool two_in_one_pass() const { return false; }
   /// X ← K⁻¹ X, on up to `threads` threads where the back-end can (the same X whatever their number). Safe
   /// to call from several threads at once on one factor.
   virtual void solve_in_place(Block& X, std::size_t threads) const = 0;

@@ -28,12 +28,32 @@ void SparseMinimiser<Scalar>::analyse(const SparseMatrix& K, std::optional<Dense
   if (dense_) alpha_ = dense_->alpha.cast<Scalar>();
 }
 
+namespace {
+
+RefusedProblem singular_form() {
+  return RefusedProblem(
+      "the quadratic form G of the global error plus constraints is singular, so the minimiser is not unique "
+      "(is the mesh in one connected piece, with every vertex in a triangle?)");
+}
+
+}  // namespace
+
 template <class Scalar>
 void SparseMinimiser<Scalar>::factorise(const SparseMatrix& K, std::size_t threads) {
-  if (!factor_->factorise(K, threads))
-    throw RefusedProblem(
-        "the quadratic form G of the global error plus constraints is singular, so the minimiser is not unique "
-        "(is the mesh in one connected piece, with every vertex in a triangle?)");
+  if (!factor_->factorise(K, threads)) throw singular_form();
+  prepare_dense_term();
+}
+
+template <class Scalar>
+void SparseMinimiser<Scalar>::factorise_two(const SparseMatrix& K, SparseMinimiser& other,
+                                            const SparseMatrix& K_other) {
+  if (!factor_->factorise_two(K, *other.factor_, K_other)) throw singular_form();
+  prepare_dense_term();
+  other.prepare_dense_term();
+}
+
+template <class Scalar>
+void SparseMinimiser<Scalar>::prepare_dense_term() {
   if (!dense_ || dense_->grounded) return;
   typename SparseFactor<Scalar>::Block y = alpha_;
   factor_->solve_in_place(y, 1);

@@ -50,6 +50,9 @@ class SparseMinimiser {
   /// to `threads` threads where the factor can (SparseFactor::factorise: the same factor whatever their
   /// number). Throws RefusedProblem when K is singular or not positive definite: the minimiser is not unique.
   void factorise(const SparseMatrix& K, std::size_t threads = 1);
+  /// K into this minimiser and K_other into `other` (a copy of this one: the same analysis and dense term), on
+  /// one thread, in one pass where the back-end can (SparseFactor::factorise_two): the factors factorise gives.
+  void factorise_two(const SparseMatrix& K, SparseMinimiser& other, const SparseMatrix& K_other);
   /// G⁻¹ R, all columns in one solve, on up to `threads` threads where the factor can
   /// (SparseFactor::solve_in_place: the same result whatever their number).
   Dense solve(const Dense& R, std::size_t threads = 1) const;
@@ -57,6 +60,8 @@ class SparseMinimiser {
 
  private:
   using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+  /// After K's factorisation, y = K⁻¹α when K is definite.
+  void prepare_dense_term();
   std::unique_ptr<SparseFactor<Scalar>> factor_;
   std::optional<DenseTerm> dense_;
   Vector alpha_;             ///< α in the scalar type

@@ -194,12 +194,12 @@ void run(const InterpolateOptions& o) {
   std::optional<io::NpyFrameWriter> npy;
   if (o.format == "npy")
     npy.emplace(staged.staging() / "frames.npy", static_cast<std::size_t>(frame_count), pair.source.vertex_count());
-  // Frames in batches of one per hardware thread (vertices_at(times) solves them in parallel), the next
-  // batch solved while this thread writes the last one and computes the metrics asked for (all of them when
-  // the figures are drawn: the viewer shows them).
+  // Frames in batches of two per hardware thread (vertices_at(times) solves them in parallel, a worker two at a
+  // time where the sparse back-end factorises two in one pass), the next batch solved while this thread writes
+  // the last one and computes the metrics asked for (all of them when the figures are drawn: the viewer shows them).
   const bool energies = o.figures || o.metrics == "all" || o.metrics == "energy",
              quality = o.figures || o.metrics == "all" || o.metrics == "quality";
-  const std::size_t batch = std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t batch = 2 * std::max(1u, std::thread::hardware_concurrency());
   auto solve = [&](std::size_t first) {
     const std::size_t last = std::min(times.size(), first + batch);
     return interpolation->vertices_at(std::vector<double>(times.begin() + static_cast<std::ptrdiff_t>(first),
