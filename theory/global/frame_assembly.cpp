@@ -187,42 +187,49 @@ void FrameAssembly::build_pattern() {
 void FrameAssembly::matrix_at(double t, SparseMatrix& H, std::size_t threads) const {
   eigen_assert(H.nonZeros() == pattern_.nonZeros() && "H must have the structure of pattern()");
   // H(t) = the constraints + Σ H₀ (constant_values_) − Σ c v v*, each triangle's rank-one term at its A_i(t).
-  // On `threads` threads, first the terms (the local paths' A_i(t)) by ranges of triangles, then the sums by
-  // ranges of H's entries, each thread subtracting the terms that fall in its range in triangle order: each
-  // entry's sum the same whatever their number
-  const std::size_t m = isotropic_ ? 0 : forward_terms_.size();
+  // On `threads` threads, chunk by chunk of triangles: first the chunk's terms (the local paths' A_i(t)) by
+  // ranges of triangles, then their sums by ranges of H's entries, each thread subtracting the terms that fall
+  // in its range in triangle order: each entry's sum the same whatever their number. The chunks bound the terms
+  // kept (at 1M triangles all of them took 64 MB a worker, which put a batch over 2 GB: bench_scale)
+  std::complex<double>* values = H.valuePtr();
+  const auto entries = static_cast<std::size_t>(H.nonZeros());
+  for_each_range(entries, threads, [&](std::size_t first, std::size_t last) {
+    std::copy(constant_values_.begin() + static_cast<std::ptrdiff_t>(first),
+              constant_values_.begin() + static_cast<std::ptrdiff_t>(last), values + first);
+  });
+  const std::size_t m = isotropic_ ? 0 : forward_terms_.size(), chunk = std::size_t{1} << 17;
   // kept by the calling thread from frame to frame, as right_hand_side_at's
   thread_local std::vector<HermitianRankOne> forward_kept, backward_kept;
   std::vector<HermitianRankOne>&forward = forward_kept, &backward = backward_kept;
-  forward.resize(m), backward.resize(reverse_ ? m : 0);
+  forward.resize(std::min(m, chunk)), backward.resize(reverse_ ? std::min(m, chunk) : 0);
   auto rank_one_of = [&](const TriangleTerm& term, const Eigen::Matrix2d& A) {
     HermitianRankOne rank_one = hermitian_rank_one_part(energy_, term.D, term.corners, A, term.frobenius_share);
     rank_one.c *= term.weight;
     return rank_one;
   };
-  for_each_range(m, threads, [&](std::size_t first, std::size_t last) {
-    for (std::size_t i = first; i < last; ++i) {
-      forward[i] = rank_one_of(forward_terms_[i], forward_.at(static_cast<Eigen::Index>(i), t));
-      if (reverse_)  // E^{-1}(1 − t)
-        backward[i] = rank_one_of(reverse_terms_[i], reverse_->at(static_cast<Eigen::Index>(i), 1 - t));
-    }
-  });
-  std::complex<double>* values = H.valuePtr();
-  for_each_range(static_cast<std::size_t>(H.nonZeros()), threads, [&](std::size_t first, std::size_t last) {
-    std::copy(constant_values_.begin() + static_cast<std::ptrdiff_t>(first),
-              constant_values_.begin() + static_cast<std::ptrdiff_t>(last), values + first);
-    auto subtract = [&](const HermitianRankOne& rank_one, const int* slots) {
-      for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b)
-          if (const auto s = static_cast<std::size_t>(slots[3 * a + b]); s >= first && s < last)  // −1: none
-            values[s] -= rank_one.c * (rank_one.v[a] * std::conj(rank_one.v[b]));
-    };
-    for (std::size_t i = 0; i < m; ++i) {
-      const int* slots = triangle_slots_.data() + 9 * i;
-      subtract(forward[i], slots);
-      if (reverse_) subtract(backward[i], slots);
-    }
-  });
+  for (std::size_t begin = 0; begin < m; begin += chunk) {
+    const std::size_t end = std::min(m, begin + chunk);
+    for_each_range(end - begin, threads, [&](std::size_t first, std::size_t last) {
+      for (std::size_t i = begin + first; i < begin + last; ++i) {
+        forward[i - begin] = rank_one_of(forward_terms_[i], forward_.at(static_cast<Eigen::Index>(i), t));
+        if (reverse_)  // E^{-1}(1 − t)
+          backward[i - begin] = rank_one_of(reverse_terms_[i], reverse_->at(static_cast<Eigen::Index>(i), 1 - t));
+      }
+    });
+    for_each_range(entries, threads, [&](std::size_t first, std::size_t last) {
+      auto subtract = [&](const HermitianRankOne& rank_one, const int* slots) {
+        for (int a = 0; a < 3; ++a)
+          for (int b = 0; b < 3; ++b)
+            if (const auto s = static_cast<std::size_t>(slots[3 * a + b]); s >= first && s < last)  // −1: none
+              values[s] -= rank_one.c * (rank_one.v[a] * std::conj(rank_one.v[b]));
+      };
+      for (std::size_t i = begin; i < end; ++i) {
+        const int* slots = triangle_slots_.data() + 9 * i;
+        subtract(forward[i - begin], slots);
+        if (reverse_) subtract(backward[i - begin], slots);
+      }
+    });
+  }
   // grounded at vertex 0: column 0 of the lower triangle is (H_00, 0, …, 0), the diagonal first
   if (dense_ && dense_->grounded)
     for (int s = H.outerIndexPtr()[0] + 1; s < H.outerIndexPtr()[1]; ++s) values[s] = 0.0;
