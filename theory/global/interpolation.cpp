@@ -239,8 +239,9 @@ std::vector<Eigen::Matrix2Xd> Interpolation::vertices_at(const std::vector<doubl
                                               (times.size() + per_worker - 1) / per_worker);
   std::vector<Engine::Workspace*> workspaces;
   if (!isotropic) {  // per_worker workspaces a worker, their factors within workspace_bytes
-    workers = std::min(workers, static_cast<std::size_t>(std::max(
-                                    1.0, std::floor(workspace_bytes / (bytes * static_cast<double>(per_worker))))));
+    // two a worker: their two factors and factorise_two's L of both side by side, as large again
+    const double worker_bytes = per_worker == 2 ? 4 * bytes : bytes;
+    workers = std::min(workers, static_cast<std::size_t>(std::max(1.0, std::floor(workspace_bytes / worker_bytes))));
     workspaces = engine.reserve_workspaces(workers * per_worker);
   }
   std::atomic<std::size_t> next{0};
