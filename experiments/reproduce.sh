@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The main job: set up, build the benchmarks, check that every installed header compiles on its own and that
-# the 1M-triangle spiral interpolates with every energy, run the benchmarks, decide the proofs' sentences whose
-# stored answers are missing or stale, decide every claim at full size, draw the figures, and write
-# reports/claims.json and reports/REPORT.md. Outputs are replaced only when a step succeeds.
+# the 1M-triangle spiral interpolates with every energy, run the benchmarks, check the lemmas' Coq proofs,
+# decide the proofs' sentences whose stored answers are missing or stale, decide every claim at full size, draw
+# the figures, and write reports/claims.json and reports/REPORT.md. Outputs are replaced only when a step succeeds.
 #   --reprove   re-decide every committed sentence first (QEPCAD B, Z3) and fail if any answer differs from
 #               the committed one (reports/proofs/); without it only missing or stale answers are decided.
 # Other arguments go to `affinterp claims` (e.g. --only ID, --seed N).
@@ -24,6 +24,9 @@ ctest --test-dir "$root/build" --output-on-failure -L headers
 # Issue 19's scale case: the 1M-triangle spiral with every energy through the CLI.
 echo "==> the 1M-triangle spiral with every energy (ctest -L scale)"
 ctest --test-dir "$root/build" --output-on-failure -L scale
+
+echo "==> the lemmas' Coq proofs checked by Coq's kernel (ctest -R proofs.coq)"
+ctest --test-dir "$root/build" --output-on-failure -R proofs.coq
 
 if ((reprove)); then
   echo "==> re-deciding every committed sentence (affinterp prove --all --check)"

@@ -22,14 +22,15 @@ build_packages=(
 )
 # What only the tests and the main job run: the viewer test's browser, the deciders, GiNaC's shell, the
 # libFuzzer target's compiler, CGAL's demo meshes, the Python module's test runner and array library, the
-# figures' font, clang-format (the layout test) and matplotlib (README's Python example).
+# figures' font, clang-format (the layout test), matplotlib (README's Python example), and Coq with Coquelicot
+# and CSDP (psatz's certificates) for the lemmas' kernel-checked proofs (checks/proofs/coq_test.sh).
 # libopenblas0-pthread: CHOLMOD's BLAS and LAPACK at run time, through the libblas.so.3 / liblapack.so.3
 # alternatives (Debian's default is the reference BLAS, 2-3x slower in the supernodal factorisation at 1M
 # triangles). The threaded build, as the engine factorises frames on several threads at once: Debian's serial
 # OpenBLAS is not safe to call concurrently (it returned wrong factors, theory/global/sparse_factor.hpp).
 run_packages=(
   libopenblas0-pthread chromium qepcad z3 cvc5 ginac-tools clang libclang-rt-14-dev clang-format libcgal-demo
-  python3-numpy python3-pytest python3-matplotlib fonts-dejavu-core
+  python3-numpy python3-pytest python3-matplotlib fonts-dejavu-core coq libcoq-coquelicot coinor-csdp
 )
 
 missing() {

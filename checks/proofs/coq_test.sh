@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# The lemmas' Coq proofs (reports/proofs/coq/) compiled by coqc, whose kernel checks every proof term.
+# Usage: coq_test.sh <source root>. Compiles a copy in a temporary folder (the tree stays clean), refuses an
+# unfinished or assumed proof (Admitted, admit, Axiom, Parameter, Hypothesis, Conjecture), and prints
+# `Print Assumptions` for every theorem MANIFEST.json lists as kernel-checked, failing on any assumption
+# outside Coq's standard Reals library and the classical logic and functional extensionality it rests on.
+# Exits 77 (skipped) only when coqc is absent.
+set -euo pipefail
+root=${1:?usage: coq_test.sh <source root>}
+src="$root/reports/proofs/coq"
+command -v coqc >/dev/null || { echo "coqc not found: skipped"; exit 77; }
+[ -f "$src/_CoqProject" ] || { echo "no $src/_CoqProject"; exit 1; }
+
+# Every .v file of the folder is in _CoqProject, so none escapes the compile.
+for f in "$src"/*.v; do
+  grep -qx "$(basename "$f")" "$src/_CoqProject" || { echo "$(basename "$f") is not in _CoqProject"; exit 1; }
+done
+if grep -nwE 'Admitted|admit|Axiom|Axioms|Parameter|Parameters|Hypothesis|Hypotheses|Conjecture' "$src"/*.v; then
+  echo "an unfinished proof or an assumed statement (above)"; exit 1
+fi
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cp "$src"/_CoqProject "$src"/*.v "$work"/
+cd "$work"
+start=$(date +%s)
+coq_makefile -f _CoqProject -o Makefile >/dev/null
+make -s -j2 >make.log 2>&1 || { cat make.log; echo "coqc failed"; exit 1; }
+echo "compiled $(ls *.v | wc -l) files in $(( $(date +%s) - start )) s"
+
+# The kernel-checked theorems, as Coq names file.theorem, from the manifest.
+python3 - "$src/MANIFEST.json" >theorems.txt <<'PY'
+import json, sys
+for lemma in json.load(open(sys.argv[1]))["lemmas"]:
+    if lemma["status"] == "kernel-checked":
+        for name in lemma["theorems"]:
+            print(lemma["file"][:-2] + "." + name)
+PY
+[ -s theorems.txt ] || { echo "MANIFEST.json lists no kernel-checked theorem"; exit 1; }
+{
+  while read -r name; do echo "Require Affinterp.${name%%.*}."; done <theorems.txt
+  while read -r name; do echo "Goal True. idtac \"== $name\". Abort. Print Assumptions Affinterp.$name."; done <theorems.txt
+} >Assumptions.v
+coqc -q -w -all -R . Affinterp Assumptions.v >assumptions.log 2>&1 || { cat assumptions.log; exit 1; }
+cat assumptions.log
+# Each assumption's name starts a line; the types continue indented.
+allowed='ClassicalDedekindReals.sig_not_dec ClassicalDedekindReals.sig_forall_dec
+FunctionalExtensionality.functional_extensionality_dep Classical_Prop.classic'
+bad=$(awk '/^[^ \t]/ && !/^(== |Axioms:|Closed under the global context)/ {print $1}' assumptions.log |
+      sort -u | grep -vxF -f <(tr ' ' '\n' <<<"$allowed") || true)
+[ -z "$bad" ] || { echo "assumptions outside the standard library's Reals axioms: $bad"; exit 1; }
+echo "$(wc -l <theorems.txt) theorems kernel-checked; assumptions within the standard Reals axioms"
