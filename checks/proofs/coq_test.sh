@@ -7,7 +7,7 @@
 # Exits 77 (skipped) only when coqc is absent.
 set -euo pipefail
 root=${1:?usage: coq_test.sh <source root>}
-src="$root/reports/proofs/coq"
+src=$(cd "$root/reports/proofs/coq" && pwd)
 command -v coqc >/dev/null || { echo "coqc not found: skipped"; exit 77; }
 [ -f "$src/_CoqProject" ] || { echo "no $src/_CoqProject"; exit 1; }
 

@@ -50,3 +50,8 @@ Definition good_for_area (A : R -> mat) : Prop :=
   monotone01 (fun t => det (A t)) /\ forall t, 0 <= t <= 1 -> 0 < det (A t).
 Definition good_for_norm (A : R -> mat) : Prop :=
   forall v, is_unit v -> monotone01 (fun t => norm (mvec (A t) v)).
+
+Lemma monotone01_ext (f g : R -> R) : (forall t, f t = g t) -> monotone01 f -> monotone01 g.
+Proof.
+  intros E [H | H]; [left | right]; intros s t Hs Hst Ht; rewrite <- !E; apply H; assumption.
+Qed.
