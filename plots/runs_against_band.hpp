@@ -1,5 +1,5 @@
 #pragma once
-// A measured figure across recorded runs (issue 21): each run's value with its 95% interval as an error bar,
+// A measured figure across recorded runs: each run's value with its 95% interval as an error bar,
 // over the shaded band of values a claim or target allows, one panel per figure, so that a reader sees whether
 // the runs agree and which machine differs.
 #include "plots/figure.hpp"
@@ -11,7 +11,7 @@
 
 namespace affinterp::plots {
 
-/// One run's figure: its label on the axis (e.g. "2026-11-23 Xeon"), value and interval (none: a point only).
+/// One run's figure: its label on the axis (e.g. "<date> Xeon", its run's date and machine), value and interval (none: a point only).
 struct RunValue {
   std::string label;
   double value = 0;

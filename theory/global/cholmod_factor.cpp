@@ -29,9 +29,9 @@ void* loaded_symbol(const char* library, const char* name) {
 }
 
 /// CHOLMOD's BLAS on one thread, once per process, when it is OpenBLAS: the engine runs frames in parallel
-/// itself, and OpenBLAS's pool of threads, shared by concurrent callers and spinning between calls, made a
-/// batch of E^R frames at 1M triangles 2.8x slower on 2 cores (bench_scale batch_frames/R,
-/// OPENBLAS_NUM_THREADS=2 against 1). One thread also makes the factor the same whatever the machine's
+/// itself, and OpenBLAS's pool of threads, shared by concurrent callers and spinning between calls, makes a
+/// batch of E^R frames at 1M triangles several times slower on 2 cores (bench_scale batch_frames/R with
+/// OPENBLAS_NUM_THREADS=2 against 1 measures it). One thread also makes the factor the same whatever the machine's
 /// thread count. This sets the thread count of the process's OpenBLAS (numpy's too, in the Python module).
 void single_threaded_blas() {
   static std::once_flag once;
@@ -43,9 +43,9 @@ void single_threaded_blas() {
 
 /// No OpenMP team inside CHOLMOD's numeric calls while it lives, for the same reason: Debian's CHOLMOD clears
 /// its workspace in OpenMP loops of a fixed 4 threads (CHOLMOD_OMP_NUM_THREADS, compiled in, above
-/// OMP_NUM_THREADS), a team woken for each large supernode; on 2 cores those 4 threads took turns, and a
-/// factorisation at 1M triangles took 1.8 s of wall clock instead of 1.1 (bench_scale backend_factor/F,
-/// OMP_THREAD_LIMIT=1 against unset). It sets the calling thread's limit of active parallel levels to 0
+/// OMP_NUM_THREADS), a team woken for each large supernode; on 2 cores those 4 threads take turns, and a
+/// factorisation at 1M triangles takes markedly longer in wall clock (bench_scale backend_factor/F with
+/// OMP_THREAD_LIMIT=1 against unset measures it). It sets the calling thread's limit of active parallel levels to 0
 /// (libgomp keeps one per thread), so that every team is the calling thread alone, and restores it after.
 class WithoutOpenMpTeams {
  public:
@@ -140,9 +140,9 @@ bool CholmodFactor<Scalar>::factorise(const SparseMatrix& K, std::size_t /*threa
   if (!(std::isfinite(ratio) && ratio > 1e-12)) return false;
   if constexpr (std::is_same_v<Scalar, double>) {
     // E^F's real L is factored once and solved every frame: as simplicial L D Lᵀ columns without the zeros of
-    // the supernodes' amalgamation, its two right-hand sides take one pass of ldl_substitution.hpp (at 1M
-    // triangles 89 ms against 104 with those zeros and 110 for CHOLMOD's supernodal solve, whose BLAS calls
-    // pack tiny blocks: bench_scale backend_solve/F)
+    // the supernodes' amalgamation, its two right-hand sides take one pass of ldl_substitution.hpp, faster
+    // than with those zeros and than CHOLMOD's supernodal solve, whose BLAS calls pack tiny blocks (bench_scale
+    // backend_solve/F measures the three)
     if (!cholmod_change_factor(CHOLMOD_REAL, false, false, true, true, L_, &common_))
       throw std::runtime_error("CHOLMOD's change of factor failed (status " + std::to_string(common_.status) + ")");
     const auto n = static_cast<Eigen::Index>(L_->n);

@@ -1,7 +1,7 @@
 #pragma once
 // The SparseFactor back-end on CHOLMOD's supernodal Cholesky LLᴴ (SuiteSparse), for large meshes
-// (sparse_factor.hpp). Ordering by AMD: METIS cut the 1M-triangle factor's flops by half but took 3-4x AMD's
-// time to order (issue 19), more than the set-up's budget. A real factor, solved many times, is turned into
+// (sparse_factor.hpp). Ordering by AMD: METIS halves the 1M-triangle factor's flops but takes several times AMD's
+// time to order, more than the set-up's budget. A real factor, solved many times, is turned into
 // simplicial L D Lᵀ columns of its own after its factorisation and solved by ldl_substitution.hpp.
 #include "theory/global/ldl_subtrees.hpp"
 #include "theory/global/sparse_factor.hpp"

@@ -19,9 +19,9 @@ std::size_t ranges_for(std::size_t count, std::size_t grain);
 inline constexpr std::size_t triangles_per_thread = 1 << 15;
 
 /// The threads worth one frame for `unknowns` vertices, up to the hardware's. A frame that factorises H(t) takes one
-/// per 4096 unknowns: the factor's two groups of subtrees (simplicial_factor.hpp) cost about a millisecond at
-/// 4096, against some tens of microseconds to start a thread. A frame with H factored once (E^F: a right-hand side
-/// and a solve) takes one per 16384: at 8192 unknowns two threads gained nothing (1.00-1.27 against 1.04-1.06 ms).
+/// per 4096 unknowns: from there the factor's two groups of subtrees (simplicial_factor.hpp) cost far more than
+/// starting a thread. A frame with H factored once (E^F: a right-hand side and a solve) takes one per 16384: a
+/// solve is so much cheaper that at 8192 unknowns a second thread gains nothing.
 inline std::size_t frame_threads(std::size_t unknowns, bool factorised_per_frame) {
   return ranges_for(unknowns, factorised_per_frame ? 1 << 12 : 1 << 14);
 }

@@ -25,8 +25,8 @@ class SimplicialFactor final : public SparseFactor<Scalar> {
   /// L's two groups of subtrees side by side on `threads` > 1, when L has them (the same L whatever `threads`).
   bool factorise(const SparseMatrix& K, std::size_t threads) override;
   /// Both in one pass over the pattern when `other` shares this factor's analysis (a clone), on one thread:
-  /// each row's index lists read once for the two matrices, whose entries lie side by side in a dense row (on
-  /// the octopus's E^R, two workers' frames factorised 1.8× faster so). The same factors as factorise gives.
+  /// each row's index lists read once for the two matrices, whose entries lie side by side in a dense row: the
+  /// index lists and the dense row's random reads paid once for two frames. The same factors as factorise gives.
   bool factorise_two(const SparseMatrix& K, SparseFactor<Scalar>& other, const SparseMatrix& K_other) override;
   bool two_in_one_pass() const override { return true; }
   /// The same split as factorise's.

@@ -5,8 +5,8 @@
 //   - our simplicial up-looking LDLᴴ (simplicial_factor.hpp, always available): the faster one to factorise on
 //     small meshes, where the supernodes stay too small for BLAS-3 kernels to pay;
 //   - CHOLMOD's supernodal Cholesky (SuiteSparse; built in when CMake finds it, AFFINTERP_HAS_CHOLMOD), on
-//     an optimised BLAS (experiments/setup.sh installs OpenBLAS) 1.7-1.8x faster to factorise at 1M
-//     triangles (cholmod_from_unknowns).
+//     an optimised BLAS (experiments/setup.sh installs OpenBLAS) the faster one to factorise on large
+//     meshes (cholmod_from_unknowns).
 // The symbolic analysis (fill-reducing ordering, elimination tree or supernodes) is done once for the
 // pattern and reused by every numeric factorisation.
 #include "theory/global/options.hpp"
@@ -54,26 +54,23 @@ class SparseFactor {
   virtual double factor_bytes() const = 0;
 };
 
-/// Unknowns (vertices) from which CHOLMOD's supernodal factor is chosen when it is built in, set from bench_scale's
-/// backend_factor and backend_solve on one thread (the man at 261k and 1M triangles, 132k and 525k unknowns; AMD
-/// EPYC, 2 cores, OpenBLAS 0.3.21 on one thread, CHOLMOD without OpenMP teams (cholmod_factor.cpp); 2026-11-26
-/// c. 20:00, medians of 3), where the ratio of the simplicial back-end's cost to CHOLMOD's, taken as a power of
-/// the size between the two, crosses 1 (the simplicial factor also splits one frame's rows over two threads,
-/// which this leaves out):
+/// Unknowns (vertices) from which CHOLMOD's supernodal factor is chosen when it is built in: where the ratio of the
+/// simplicial back-end's cost to CHOLMOD's crosses 1, taken as a power of the size between the two sizes
+/// bench_scale's backend_factor and backend_solve measure on one thread (the man at 261k and 1M triangles, 132k
+/// and 525k unknowns; CHOLMOD on OpenBLAS without OpenMP teams, cholmod_factor.cpp). The simplicial factor also
+/// splits one frame's rows over two threads, which this leaves out. Re-run those benchmarks to move them:
 ///  - real systems, E^F's L, factored once and solved every frame: both solve alike (CHOLMOD's factor is turned
-///    into the same kind of columns, cholmod_factor.hpp: 17.0 ms against 16.8 at 132k, 91.5 against 92.8 at
-///    525k); the factorisation 135 against 215 ms at 132k, 1632 against 1166 at 525k: ratio 0.63 and 1.40,
-///    crossing at about 290k: 300,000;
-///  - complex systems, refactorised every frame (E^R, E^S, blends): a factorisation and a solve 222 + 27 against
-///    249 + 37 ms at 132k, 2959 + 143 against 1422 + 167 at 525k: ratio 0.87 and 1.95, crossing at about
-///    170k: 170,000.
+///    into the same kind of columns, cholmod_factor.hpp), so the factorisation decides: the simplicial one is
+///    faster at 132k, CHOLMOD at 525k, crossing near 300,000;
+///  - complex systems, refactorised every frame (E^R, E^S, blends): a factorisation and a solve, the simplicial
+///    back-end a little faster at 132k and CHOLMOD about twice as fast at 525k, crossing near 170,000.
 template <class Scalar>
 inline constexpr Eigen::Index cholmod_from_unknowns = std::is_same_v<Scalar, double> ? 300'000 : 170'000;
 
 /// Whether this build has the CHOLMOD back-end.
 bool has_cholmod();
 
-/// The back-end for `unknowns` unknowns: CHOLMOD from cholmod_from_unknowns<Scalar> on when built in, else Eigen's.
+/// The back-end for `unknowns` unknowns: CHOLMOD from cholmod_from_unknowns<Scalar> on when built in, else the simplicial one.
 template <class Scalar>
 std::unique_ptr<SparseFactor<Scalar>> make_sparse_factor(Eigen::Index unknowns);
 /// The named back-end (for benchmarks comparing them); std::invalid_argument if it is not built in.

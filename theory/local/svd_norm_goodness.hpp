@@ -3,7 +3,7 @@
 // D = diag(x, y), x, y > 0, decided exactly. The homotopy depends on the real angle β (radians), not only on
 // the rotation R_β; α plays no part (R_{tα} is orthogonal).
 //
-// Lemma L9 (issue 10, reports/proofs/LEMMAS.md): with m1 = x − 1, m2 = y − 1, a = 1 + t m1, b = 1 + t m2 and
+// Lemma L9 (reports/proofs/LEMMAS.md): with m1 = x − 1, m2 = y − 1, a = 1 + t m1, b = 1 + t m2 and
 // ψ = φ + tβ for v = (cos φ, sin φ), ‖A_s(t)v‖² = a² cos²ψ + b² sin²ψ and its t-derivative is
 // 2 (cos ψ, sin ψ) G_t (cos ψ, sin ψ)ᵀ with G_t = [[m1 a, β(b² − a²)/2], [β(b² − a²)/2, m2 b]]; A_s is good for
 // norm iff G(t) = 4 det G_t ≥ 0 for every t in [0, 1].

@@ -1,5 +1,5 @@
 #pragma once
-// The condition grammar of `affinterp decide` (issue 10, item 5), parsed into a quantifier-free Formula:
+// The condition grammar of `affinterp decide` , parsed into a quantifier-free Formula:
 //
 //   condition := disjunct (("or" | "||") disjunct)*
 //   disjunct  := literal (("and" | "&&") literal)*

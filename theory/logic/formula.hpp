@@ -1,5 +1,5 @@
 #pragma once
-// First-order formulas over the reals whose atoms are polynomial sign conditions `p op 0` (issue 10): the
+// First-order formulas over the reals whose atoms are polynomial sign conditions `p op 0`: the
 // language of the sentences that QEPCAD B and Z3 decide. A Formula is a plain value tree; the functions
 // below evaluate quantifier-free formulas exactly and bring sentences into the prenex form the deciders read.
 #include "theory/logic/polynomial.hpp"

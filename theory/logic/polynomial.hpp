@@ -1,6 +1,6 @@
 #pragma once
 // Sparse multivariate polynomials over the rationals, in named variables: the atoms of the first-order
-// sentences that decide the algebraic claims for all reals (issue 10). Exact throughout.
+// sentences that decide the algebraic claims for all reals. Exact throughout.
 #include "theory/exact/rational.hpp"
 
 #include <map>

@@ -5,7 +5,7 @@
 //
 // Where double arithmetic cannot decide the answer (exp: an entry beyond 2⁴⁰, so that the absolute
 // eigenvalue error ε‖S‖ exceeds 10⁻⁴; S^t and log: κ₂(S) beyond 2²⁰) the matrix goes to
-// wide_range.hpp (an eigen-decomposition at 1152 or 2304 bits, 0.1 to 0.6 ms); every bound below
+// wide_range.hpp (an eigen-decomposition at 1152 or 2304 bits, far slower); every bound below
 // covers both paths and is tested against Arb-certified references (checks/sym3/full_range_test.cpp).
 // ε = 2⁻⁵³; κ₂ = λmax/λmin.
 #include "theory/sym3/algorithms.hpp"

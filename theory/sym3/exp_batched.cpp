@@ -95,8 +95,8 @@ void store(const split::Sym<Batch>& X, const split::Sym<Batch>& S, const Mat3* i
 }  // namespace
 
 // Flattened so that the split and the exponential stay in registers (no struct round trips). Two batches a step,
-// as a Twin: on Zen 4 (AVX-512) 12.5 ns a matrix against 16.0 one batch at a time, where the single chain left the
-// core waiting (bench_exp3, exp3/affinterp-batched).
+// as a Twin: two independent chains keep the core busy where a single chain leaves it waiting on each step's
+// latency (bench_exp3's exp3/affinterp-batched measures it).
 [[gnu::flatten]] void exp_batched(std::span<const Mat3> in, std::span<Mat3> out) {
   if (in.size() != out.size()) throw std::invalid_argument("exp_batched: input and output sizes differ");
   const std::size_t full = in.size() / W * W;

@@ -18,7 +18,7 @@ template <unsigned Bits>
 using Real = mp::number<mp::cpp_bin_float<Bits, mp::digit_base_2>, mp::et_off>;
 
 /// √x (x ≥ 0) by Newton's iteration from the double square root of the mantissa: Boost's own sqrt is
-/// about fifteen times slower at these precisions.
+/// much slower at these precisions.
 template <unsigned Bits>
 Real<Bits> square_root(const Real<Bits>& x) {
   if (!(x > 0)) return Real<Bits>(0);

@@ -9,7 +9,7 @@
 // decide S^t and log S carry relative errors ε κ₂(S) (all of them beyond 1/ε, where even positive
 // definiteness is lost). affinterp.cpp sends exactly those matrices
 // here (max |S_ij| > 2⁴⁰ for exp; κ₂ beyond 2²⁰ for S^t and log), so the double path keeps its speed and
-// these rare matrices take 0.1 ms (exp) to 0.6 ms (S^t, log at 2304 bits).
+// only these rare matrices pay for the wide arithmetic.
 //
 // Accuracy: 1152 bits resolve eigenvalues to 2⁻¹¹⁵⁰‖S‖ ≤ 2⁻¹²⁴ absolutely, enough for exp of any double
 // matrix; S^t and log need the smallest eigenvalue to relative accuracy and use 2304 bits when 1152 do
