@@ -30,6 +30,18 @@ inline CliResult run_cli(const std::string& args) {
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw), text.str()};
 }
 
+/// The standard output of `affinterp ARGS` (ARGS as shell words), standard error discarded.
+inline std::string cli_output(const std::string& args) {
+  const std::filesystem::path out =
+      std::filesystem::temp_directory_path() / ("affinterp_cli_" + std::to_string(getpid()) + ".out");
+  std::system((std::string(AFFINTERP_CLI) + " " + args + " >'" + out.string() + "' 2>/dev/null").c_str());
+  std::ifstream in(out);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::filesystem::remove(out);
+  return text.str();
+}
+
 /// A fresh, empty folder `name` in this test program's own temporary folder, `program`_PID, which is removed
 /// when the program exits normally (every call of one program passes the same `program`).
 inline std::filesystem::path scratch_folder(const std::string& program, const std::string& name) {

@@ -151,8 +151,8 @@ TEST(InterpolateCli, AcceptsEveryOptionFamily) {
                          (folder / "target.obj").string() + " --frames 3 --no-figures --out " +
                          (folder / "out").string();
   for (const std::string& options : std::vector<std::string>{
-           "--local polar --energy F --no-area-weights --pin 0 --pin 3@10", "--local svd --energy S --symmetric",
-           "--local linear --energy blend --weights " + (folder / "weights.txt").string(),
+           "--homotopy polar --energy F --no-area-weighted --pin 0 --pin 3@10", "--homotopy svd --energy S --symmetric",
+           "--homotopy linear --energy blend --blend-weights " + (folder / "weights.txt").string(),
            "--energy blend --blend-weight 0.2 --rotation-branch principal",
            "--locus '1@5:0,0;0.5,2;1,1' --edge-direction 0:1 --edge-direction 1:2:linear@3 --barycentre-locus none",
            "--barycentre-locus '0,0;1,1;2,0@2'"}) {
@@ -162,7 +162,7 @@ TEST(InterpolateCli, AcceptsEveryOptionFamily) {
 }
 
 // One place decides each default (theory/global/options.hpp): `interpolate` with no option runs what
-// global::InterpolationOptions{} says, as metrics.json records it.
+// global::InterpolationOptions{} says, as metrics.json records it under the options' names.
 TEST(InterpolateCli, DefaultsAreTheEnginesDefaults) {
   const fs::path folder = scratch("defaults");
   ASSERT_EQ(run_cli("shapes random --out " + folder.string()).status, 0);
@@ -171,14 +171,50 @@ TEST(InterpolateCli, DefaultsAreTheEnginesDefaults) {
   ASSERT_EQ(result.status, 0) << result.error;
   const nlohmann::json used = read_json(folder / "out" / "metrics.json")["options"];
   const global::InterpolationOptions defaults{};
-  EXPECT_EQ(used["local"], global::to_string(defaults.homotopy));
+  EXPECT_EQ(used["homotopy"], global::to_string(defaults.homotopy));
   EXPECT_EQ(used["energy"], global::to_string(defaults.energy));
   EXPECT_EQ(used["rotation_branch"], global::to_string(defaults.rotation_branch));
-  EXPECT_EQ(used["area_weights"], defaults.area_weighted);
+  EXPECT_EQ(used["area_weighted"], defaults.area_weighted);
   EXPECT_EQ(used["symmetric"], defaults.symmetric);
   EXPECT_EQ(used["blend_weight"], defaults.blend_weight);
   EXPECT_EQ(used["time_range"], nlohmann::json({defaults.t_begin, defaults.t_end}));
   EXPECT_TRUE(used["pins"].empty() && used["loci"].empty() && used["edge_directions"].empty());
+}
+
+/// `interpolate --help`'s line for `flag`, with the choices and default CLI11 prints after it.
+std::string help_line(const std::string& help, const std::string& flag) {
+  const auto at = help.find("  " + flag + " ");
+  return at == std::string::npos ? "" : help.substr(at, help.find('\n', at) - at);
+}
+
+template <global::OptionEnum Enum>
+void expect_names_and_default_of(const std::string& flag, Enum engine_default, const fs::path& folder) {
+  const std::string line = help_line(cli_output("interpolate --help"), flag);
+  EXPECT_NE(line.find("{" + global::option_choices<Enum>() + "}=" + global::to_string(engine_default)),
+            std::string::npos)
+      << flag << ": " << line;
+  const std::string io = " --source " + (folder / "source.obj").string() + " --target " +
+                         (folder / "target.obj").string() + " --frames 2 --no-figures --out " +
+                         (folder / "names").string();
+  for (const auto& named : global::OptionNames<Enum>::values) {
+    const auto result = run_cli("interpolate " + flag + " " + std::string(named.name) + io);
+    ASSERT_EQ(result.status, 0) << flag << " " << named.name << ": " << result.error;
+  }
+  const auto unknown = run_cli("interpolate " + flag + " not-a-name" + io);
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_NE(unknown.error.find("(expected " + global::option_choices<Enum>() + ")"), std::string::npos)
+      << unknown.error;
+}
+
+// The CLI offers exactly the engine's names for each option enum, with the engine's default, and refuses
+// others with the engine's message: a front end that lists or defaults a name of its own fails here.
+TEST(InterpolateCli, EnumOptionsAreTheEnginesNamesAndDefaults) {
+  const fs::path folder = scratch("names");
+  ASSERT_EQ(run_cli("shapes random --out " + folder.string()).status, 0);
+  const global::InterpolationOptions defaults{};
+  expect_names_and_default_of("--homotopy", defaults.homotopy, folder);
+  expect_names_and_default_of("--energy", defaults.energy, folder);
+  expect_names_and_default_of("--rotation-branch", defaults.rotation_branch, folder);
 }
 
 TEST(InterpolateCli, ClockwiseFilesAreReorientedAndFramesKeepTheirFaceList) {
@@ -250,10 +286,12 @@ TEST(InterpolateCli, RefusesBadInputsLeavingOutUntouched) {
   expect_refused(pair("s.obj", "t.obj") + " --locus 1:0,0", 2, "--locus '1:0,0'");
   expect_refused(pair("s.obj", "t.obj") + " --edge-direction 1", 2, "--edge-direction '1'");
   expect_refused(pair("s.obj", "t.obj") + " --barycentre-locus 'x'", 2, "--barycentre-locus 'x'");
-  expect_refused(pair("s.obj", "t.obj") + " --time-range 1:0", 2, "--time-range '1:0'");
-  expect_refused(pair("s.obj", "t.obj") + " --local slerp", 2, "--local");
-  expect_refused(pair("s.obj", "t.obj") + " --energy blend --weights " + (d / "w.txt").string(), 1,
-                 "1 weights for 2 triangles");
+  expect_refused(pair("s.obj", "t.obj") + " --time-range 1:", 2, "--time-range '1:'");
+  expect_refused(pair("s.obj", "t.obj") + " --time-range 1:0", 1, "t_begin <= t_end");
+  expect_refused(pair("s.obj", "t.obj") + " --homotopy slerp", 2, "--homotopy: unknown local homotopy 'slerp'");
+  expect_refused(pair("s.obj", "t.obj") + " --blend-weight 1.5", 1, "the blend weight w must lie in [0, 1]");
+  expect_refused(pair("s.obj", "t.obj") + " --energy blend --blend-weights " + (d / "w.txt").string(), 1,
+                 "one weight w_i per triangle (2), got 1");
   expect_refused(pair("s.obj", "t.obj") + " --frames 1", 2, "--frames");
   for (const std::string list : {"''", "0,,1", "0,1,", "a", "'0;1'", "1e999", "0.5x", "nan"})
     expect_refused(pair("s.obj", "t.obj") + " --times " + list, 2,

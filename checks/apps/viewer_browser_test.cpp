@@ -69,7 +69,7 @@ class ViewerInBrowser : public ::testing::Test {
                            (scratch() / "shape" / "target.obj").string() + " --frames 7";
     auto result = run_cli("interpolate" + io + " --out " + (scratch() / "exp").string());
     ASSERT_EQ(result.status, 0) << result.error;
-    result = run_cli("interpolate" + io + " --local linear --energy F --out " + (scratch() / "linear").string());
+    result = run_cli("interpolate" + io + " --homotopy linear --energy F --out " + (scratch() / "linear").string());
     ASSERT_EQ(result.status, 0) << result.error;
     result = run_cli("view " + (scratch() / "exp").string() + " " + (scratch() / "linear").string() + " -o " +
                      (scratch() / "compare.html").string());

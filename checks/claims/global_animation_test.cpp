@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 TEST(GlobalFigures, DrawAViewerBesideEachAnimation) {
   const auto pair = shapes::make_shape("man-wave");
   global::InterpolationOptions options;
-  options.energy = global::Energy::frobenius;
+  options.energy = global::Energy::F;
   options.constraints.barycentre = global::BarycentreLocus{};
   const Animation animation = animate("E^F", pair.source, global::Interpolation(pair.source, pair.target, options), 5);
   ASSERT_EQ(animation.energy.size(), 5u);

@@ -40,7 +40,7 @@ int main() {
   target = source;
   target.vertices.row(0).array() += 2;
   affinterp::global::InterpolationOptions options;
-  options.energy = affinterp::global::Energy::frobenius;
+  options.energy = affinterp::global::Energy::F;
   options.constraints.pinned = {{0, 1.0}};
   const affinterp::global::Interpolation interpolation(source, target, options);
   expect((interpolation.vertices_at(1.0) - target.vertices).norm() < 1e-12, "global interpolation");

@@ -39,7 +39,7 @@ Eigen::VectorXd consistent_theta(const Mesh& P, const std::vector<Eigen::Matrix2
 TEST(FrameAssembly, PatternHoldsTheVertexPairsOfTrianglesAndSparseTerms) {
   const Mesh P = testing::strip(7, 3), Q = testing::bent(P, 2.0);
   InterpolationOptions options;
-  options.energy = Energy::similarity;
+  options.energy = Energy::R;
   options.constraints.pinned = {{5, 1.0}};
   options.constraints.edges = {{0, 30, EdgeDirection::Path::linear, 1.0}};  // vertices of no common triangle
   options.constraints.barycentre = BarycentreLocus{};                       // dense: not in the pattern
@@ -60,7 +60,7 @@ TEST(FrameAssembly, PatternHoldsTheVertexPairsOfTrianglesAndSparseTerms) {
 
 TEST(FrameAssembly, RightHandSideIsTheSameOnAnyNumberOfThreads) {
   const auto [P, Q] = shapes::random_pair(11, 300);
-  for (const Energy energy : {Energy::frobenius, Energy::blend}) {
+  for (const Energy energy : {Energy::F, Energy::blend}) {
     InterpolationOptions options;
     options.energy = energy;
     options.symmetric = true;
@@ -80,7 +80,7 @@ TEST(FrameAssembly, RightHandSideIsTheSameOnAnyNumberOfThreads) {
 
 TEST(FrameAssembly, MatrixIsTheSameOnAnyNumberOfThreads) {
   const auto [P, Q] = shapes::random_pair(13, 300);
-  for (const Energy energy : {Energy::similarity, Energy::procrustes, Energy::blend}) {
+  for (const Energy energy : {Energy::R, Energy::S, Energy::blend}) {
     InterpolationOptions options;
     options.energy = energy;
     options.symmetric = true;

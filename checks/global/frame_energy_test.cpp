@@ -27,7 +27,7 @@ Eigen::Matrix2Xd jiggled(const Eigen::Matrix2Xd& v, double size, unsigned seed) 
 
 TEST(FrameEnergy, IsTheMinimisedFormAndItsPartsAddUp) {
   const Mesh P = testing::strip(6, 1), Q = testing::bent(P, 3.0);  // radius 2 > 1 row
-  for (const Energy energy : {Energy::frobenius, Energy::procrustes, Energy::similarity, Energy::blend})
+  for (const Energy energy : {Energy::F, Energy::S, Energy::R, Energy::blend})
     for (const bool symmetric : {false, true})
       for (const bool area : {false, true}) {
         SCOPED_TRACE(to_string(energy) + (symmetric ? " symmetric" : "") + (area ? " area" : ""));
@@ -49,10 +49,10 @@ TEST(FrameEnergy, IsTheMinimisedFormAndItsPartsAddUp) {
           if (!symmetric) {
             EXPECT_EQ(e.backward, 0.0);
           }
-          if (energy == Energy::frobenius) {
+          if (energy == Energy::F) {
             EXPECT_EQ(e.similarity, 0.0);
           }
-          if (energy == Energy::similarity || energy == Energy::procrustes) {
+          if (energy == Energy::R || energy == Energy::S) {
             EXPECT_EQ(e.frobenius, 0.0);
           }
           for (unsigned seed = 1; seed <= 3; ++seed) {
@@ -68,7 +68,7 @@ TEST(FrameEnergy, IsTheMinimisedFormAndItsPartsAddUp) {
 TEST(FrameEnergy, RefusesAFrameOfAnotherMesh) {
   const Mesh P = testing::strip(2, 1), Q = testing::bent(P, 1.0);
   InterpolationOptions options;
-  options.energy = Energy::frobenius;
+  options.energy = Energy::F;
   options.constraints.barycentre = BarycentreLocus{};
   const Interpolation interpolation(P, Q, options);
   EXPECT_THROW(interpolation.energy_at(0.5, Eigen::Matrix2Xd::Zero(2, 3)), std::invalid_argument);

@@ -34,7 +34,7 @@ InterpolationOptions with(Energy energy, Constraints constraints = {}) {
 }
 
 TEST(DefaultEdgeDirection, TheEdgeOfTheTriangleNearestTheBarycentre) {
-  for (const Energy energy : {Energy::similarity, Energy::procrustes, Energy::blend}) {
+  for (const Energy energy : {Energy::R, Energy::S, Energy::blend}) {
     const auto edge = default_edge_direction(fan(), fan(), with(energy));
     ASSERT_TRUE(edge) << to_string(energy);
     EXPECT_EQ(edge->i, 1);
@@ -46,7 +46,7 @@ TEST(DefaultEdgeDirection, TheEdgeOfTheTriangleNearestTheBarycentre) {
   // and (1, 2) are both at squared distance ½ from (3/2, 3/2), exactly.
   Mesh square = testing::unit_square();
   square.vertices *= 3;
-  const auto first = default_edge_direction(square, square, with(Energy::similarity));
+  const auto first = default_edge_direction(square, square, with(Energy::R));
   ASSERT_TRUE(first);
   EXPECT_EQ(first->i, 0);
   EXPECT_EQ(first->j, 1);
@@ -63,30 +63,30 @@ Mesh fan_pulled_down() {
 
 TEST(DefaultEdgeDirection, ScoresEachTriangleInBothMeshesSoSwappingKeepsTheEdge) {
   const Mesh P = fan(), Q = fan_pulled_down();
-  const auto q_alone = default_edge_direction(Q, Q, with(Energy::similarity));
+  const auto q_alone = default_edge_direction(Q, Q, with(Energy::R));
   ASSERT_TRUE(q_alone);
   EXPECT_EQ(std::pair(q_alone->i, q_alone->j), std::pair(Eigen::Index{0}, Eigen::Index{1}));  // triangle 0's
   for (const auto& [source, target] : {std::pair{P, Q}, std::pair{Q, P}}) {
-    const auto edge = default_edge_direction(source, target, with(Energy::similarity));
+    const auto edge = default_edge_direction(source, target, with(Energy::R));
     ASSERT_TRUE(edge);
     EXPECT_EQ(std::pair(edge->i, edge->j), std::pair(Eigen::Index{1}, Eigen::Index{3}));  // triangle 1's
   }
 }
 
 TEST(DefaultEdgeDirection, NoneWhenTheEnergyOrTheConstraintsFixRotationAndScale) {
-  EXPECT_FALSE(default_edge_direction(fan(), fan(), with(Energy::frobenius)));
-  EXPECT_FALSE(default_edge_direction(fan(), fan(), with(Energy::similarity, {{{0, 1.0}}, {}, {}, {}})));
-  EXPECT_FALSE(default_edge_direction(
-      fan(), fan(), with(Energy::similarity, {{}, {{2, Eigen::Matrix2Xd::Zero(2, 2), 1.0}}, {}, {}})));
-  EXPECT_FALSE(default_edge_direction(
-      fan(), fan(), with(Energy::similarity, {{}, {}, {{0, 2, EdgeDirection::Path::linear, 1.0}}, {}})));
+  EXPECT_FALSE(default_edge_direction(fan(), fan(), with(Energy::F)));
+  EXPECT_FALSE(default_edge_direction(fan(), fan(), with(Energy::R, {{{0, 1.0}}, {}, {}, {}})));
+  EXPECT_FALSE(
+      default_edge_direction(fan(), fan(), with(Energy::R, {{}, {{2, Eigen::Matrix2Xd::Zero(2, 2), 1.0}}, {}, {}})));
+  EXPECT_FALSE(
+      default_edge_direction(fan(), fan(), with(Energy::R, {{}, {}, {{0, 2, EdgeDirection::Path::linear, 1.0}}, {}})));
   // A barycentre locus fixes translation only: the edge is still added.
-  EXPECT_TRUE(default_edge_direction(fan(), fan(), with(Energy::similarity, {{}, {}, {}, BarycentreLocus{}})));
+  EXPECT_TRUE(default_edge_direction(fan(), fan(), with(Energy::R, {{}, {}, {}, BarycentreLocus{}})));
 }
 
 TEST(DefaultEdgeDirection, MakesASimilarityInvariantEnergyWellPosed) {
   const Mesh P = testing::strip(4, 2), Q = testing::bent(P, 1.0);
-  InterpolationOptions options = with(Energy::similarity, {{}, {}, {}, BarycentreLocus{}});
+  InterpolationOptions options = with(Energy::R, {{}, {}, {}, BarycentreLocus{}});
   EXPECT_THROW(Interpolation(P, Q, options), RefusedProblem);  // the collapse onto the barycentre's path
   options.constraints.edges.push_back(*default_edge_direction(P, Q, options));
   EXPECT_NO_THROW(Interpolation(P, Q, options));

@@ -62,10 +62,10 @@ RC_GTEST_PROP(HermitianForm, SolverFormsAreTheRealFormsAsHermitianBlocks, ()) {
   RC_PRE(std::abs(A.determinant()) > 0.1);
   const auto D = linear_part_operator(p);
   const double w = *rc::gen::inRange(0, 5) / 4.0;
-  const std::pair<Energy, TriangleQuadratic<double>> cases[] = {{Energy::frobenius, frobenius_quadratic(D, A)},
-                                                                {Energy::similarity, similarity_quadratic(D, A)},
+  const std::pair<Energy, TriangleQuadratic<double>> cases[] = {{Energy::F, frobenius_quadratic(D, A)},
+                                                                {Energy::R, similarity_quadratic(D, A)},
                                                                 {Energy::blend, blend_quadratic(D, A, w)},
-                                                                {Energy::procrustes, procrustes_quadratic(p, A)}};
+                                                                {Energy::S, procrustes_quadratic(p, A)}};
   for (const auto& [energy, real] : cases) {
     const HermitianTriangleForm form = hermitian_local_error(energy, D, p, A, w);
     const double scale = 1 + real.H.cwiseAbs().maxCoeff();

@@ -35,7 +35,7 @@ Eigen::Matrix2Xd dense_minimiser(const Interpolation& interpolation, double t) {
   return Eigen::Map<const Eigen::Matrix2Xd>(v.data(), 2, v.size() / 2);
 }
 
-const Energy all_energies[] = {Energy::frobenius, Energy::procrustes, Energy::similarity, Energy::blend};
+const Energy all_energies[] = {Energy::F, Energy::S, Energy::R, Energy::blend};
 
 TEST(Interpolation, EndPointsAreSourceAndTarget) {
   const Mesh P = strip(4, 2), Q = bent(P, 1.5);
@@ -66,7 +66,7 @@ TEST(Interpolation, BarycentreAloneFixesTranslationOfEF) {
   const Mesh P = strip(3, 1), Q = bent(P, 1.0);
   Constraints constraints;
   constraints.barycentre = BarycentreLocus{};
-  const Interpolation interpolation(P, Q, with(Energy::frobenius, constraints));
+  const Interpolation interpolation(P, Q, with(Energy::F, constraints));
   const Eigen::Matrix2Xd v = interpolation.vertices_at(0.5);
   EXPECT_LT((v - dense_minimiser(interpolation, 0.5)).cwiseAbs().maxCoeff(), 1e-9);
   const Eigen::Vector2d expected = (P.vertices.rowwise().mean() + Q.vertices.rowwise().mean()) / 2;
@@ -75,8 +75,8 @@ TEST(Interpolation, BarycentreAloneFixesTranslationOfEF) {
 
 TEST(Interpolation, FrobeniusIsFactoredOnceAndSimilarityIsNot) {
   const Mesh P = strip(2, 1), Q = bent(P, 1.0);
-  EXPECT_TRUE(Interpolation(P, Q, with(Energy::frobenius, two_pins(0, 5))).factored_once());
-  EXPECT_FALSE(Interpolation(P, Q, with(Energy::similarity, two_pins(0, 5))).factored_once());
+  EXPECT_TRUE(Interpolation(P, Q, with(Energy::F, two_pins(0, 5))).factored_once());
+  EXPECT_FALSE(Interpolation(P, Q, with(Energy::R, two_pins(0, 5))).factored_once());
   InterpolationOptions rigid = with(Energy::blend, two_pins(0, 5));
   rigid.blend_weight = 1.0;
   EXPECT_TRUE(Interpolation(P, Q, rigid).factored_once());
@@ -84,7 +84,7 @@ TEST(Interpolation, FrobeniusIsFactoredOnceAndSimilarityIsNot) {
 
 TEST(Interpolation, ConsistentBranchUnwrapsACoil) {
   const Mesh P = strip(12, 1), Q = bent(P, 3 * std::numbers::pi);  // coils one and a half turns
-  InterpolationOptions options = with(Energy::frobenius, two_pins(0, 13));
+  InterpolationOptions options = with(Energy::F, two_pins(0, 13));
   const Eigen::VectorXd theta = Interpolation(P, Q, options).rotation_angles();
   EXPECT_GT(theta.maxCoeff(), 2 * std::numbers::pi);
   options.rotation_branch = RotationBranch::principal;
@@ -93,31 +93,31 @@ TEST(Interpolation, ConsistentBranchUnwrapsACoil) {
 
 TEST(Interpolation, RefusesIllPosedProblems) {
   const Mesh P = strip(2, 1), Q = bent(P, 1.0);
-  EXPECT_THROW(Interpolation(P, Q, with(Energy::frobenius, {})), RefusedProblem);
+  EXPECT_THROW(Interpolation(P, Q, with(Energy::F, {})), RefusedProblem);
   try {
-    Interpolation(P, Q, with(Energy::similarity, {{{0, 1.0}}, {}, {}, {}}));
+    Interpolation(P, Q, with(Energy::R, {{{0, 1.0}}, {}, {}, {}}));
     ADD_FAILURE() << "E^R with one pinned vertex was accepted";
   } catch (const RefusedProblem& e) {
     EXPECT_NE(std::string(e.what()).find("collapse"), std::string::npos) << e.what();
   }
   // One pin and an edge direction fix translation, rotation and scale.
   Constraints pin_and_edge{{{0, 1.0}}, {}, {{0, 1, EdgeDirection::Path::local_homotopy, 1.0}}, {}};
-  EXPECT_NO_THROW(Interpolation(P, Q, with(Energy::similarity, pin_and_edge)));
+  EXPECT_NO_THROW(Interpolation(P, Q, with(Energy::R, pin_and_edge)));
   Mesh flipped = Q;
   flipped.vertices.row(0) *= -1;
-  EXPECT_THROW(Interpolation(P, flipped, with(Energy::frobenius, two_pins(0, 5))), RefusedProblem);
+  EXPECT_THROW(Interpolation(P, flipped, with(Energy::F, two_pins(0, 5))), RefusedProblem);
   Mesh other = Q;
   other.triangles.col(0) = other.triangles.col(0).reverse().eval();
-  EXPECT_THROW(Interpolation(P, other, with(Energy::frobenius, two_pins(0, 5))), RefusedProblem);
-  EXPECT_THROW(Interpolation(P, Q, with(Energy::frobenius, two_pins(0, 99))), RefusedProblem);
-  EXPECT_THROW(Interpolation(P, Q, with(Energy::frobenius, two_pins(0, 5))).vertices_at(1.5), std::out_of_range);
+  EXPECT_THROW(Interpolation(P, other, with(Energy::F, two_pins(0, 5))), RefusedProblem);
+  EXPECT_THROW(Interpolation(P, Q, with(Energy::F, two_pins(0, 99))), RefusedProblem);
+  EXPECT_THROW(Interpolation(P, Q, with(Energy::F, two_pins(0, 5))).vertices_at(1.5), std::out_of_range);
 }
 
 // vertices_at is const: frames computed by several threads at once on one object (E^R, refactorised per
 // frame in the object's workspace) are bit for bit the frames computed one after another.
 TEST(Interpolation, VerticesAtIsSafeToCallConcurrently) {
   const Mesh P = strip(8, 2), Q = bent(P, 2.0);
-  const Interpolation interpolation(P, Q, with(Energy::similarity, two_pins(0, P.vertex_count() - 1)));
+  const Interpolation interpolation(P, Q, with(Energy::R, two_pins(0, P.vertex_count() - 1)));
   ASSERT_FALSE(interpolation.factored_once());
   constexpr int frames = 8;
   std::vector<Eigen::Matrix2Xd> alone, together(frames);
@@ -139,7 +139,7 @@ RC_GTEST_PROP(Interpolation, RandomTargetsMatchDenseMinimiser, ()) {
   const double turn = *rc::gen::inRange(1, 11) / 10.0 * cols / (rows + 0.5);  // radius > rows + 0.5
   Q = bent(Q, turn);
   for (Eigen::Index i = 0; i < Q.triangle_count(); ++i) RC_PRE(Q.doubled_signed_area(i) > 0.05);
-  const Energy energy = *rc::gen::element(Energy::frobenius, Energy::procrustes, Energy::similarity, Energy::blend);
+  const Energy energy = *rc::gen::element(Energy::F, Energy::S, Energy::R, Energy::blend);
   const Interpolation interpolation(P, Q, with(energy, two_pins(0, P.vertex_count() - 1)));
   const double t = *rc::gen::inRange(0, 11) / 10.0;
   RC_ASSERT((interpolation.vertices_at(t) - dense_minimiser(interpolation, t)).cwiseAbs().maxCoeff() < 1e-8);

@@ -18,7 +18,7 @@ using testing::unit_square;
 
 InterpolationOptions pinned_corners() {
   InterpolationOptions options;
-  options.energy = Energy::frobenius;
+  options.energy = Energy::F;
   options.constraints.pinned = {{0, 1.0}, {2, 1.0}};
   return options;
 }

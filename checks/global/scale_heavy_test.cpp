@@ -15,7 +15,7 @@ TEST(ScaleHeavy, MillionTriangleSpiralInterpolatesWithEveryEnergy) {
   ASSERT_EQ(s.source.triangle_count(), 1'000'000);
   const double box = testing::box_size(s.source, s.target);
   const Eigen::Vector2d expected = (s.source.vertices.rowwise().mean() + s.target.vertices.rowwise().mean()) / 2;
-  for (const Energy energy : {Energy::frobenius, Energy::procrustes, Energy::similarity, Energy::blend}) {
+  for (const Energy energy : {Energy::F, Energy::S, Energy::R, Energy::blend}) {
     const Interpolation interpolation(s.source, s.target, testing::cli_options(energy, s));
     const Eigen::Matrix2Xd v = interpolation.vertices_at(0.5);
     EXPECT_TRUE(v.allFinite()) << to_string(energy);

@@ -37,7 +37,7 @@ double diameter(const Mesh& P, const Mesh& Q) {
 RC_GTEST_PROP(SwapInvariance, SymmetrisedFramesDoNotDependOnWhichMeshComesFirst, ()) {
   const auto seed = *rc::gen::inRange<std::uint64_t>(1, 1000000);
   const auto [P, Q] = shapes::random_pair(seed, *rc::gen::inRange(3, 40));
-  const Energy energy = *rc::gen::element(Energy::frobenius, Energy::procrustes, Energy::similarity, Energy::blend);
+  const Energy energy = *rc::gen::element(Energy::F, Energy::S, Energy::R, Energy::blend);
   const double w = *rc::gen::inRange(0, 11) / 10.0, t = *rc::gen::inRange(-5, 16) / 10.0;
   RC_TAG(to_string(energy));
   const InterpolationOptions forward = symmetric_defaults(energy, w, P, Q),
@@ -64,7 +64,7 @@ RC_GTEST_PROP(SwapInvariance, SymmetrisedFramesDoNotDependOnWhichMeshComesFirst,
 /// the mirrored ones for E^F's paths R_{tθ} to match.
 TEST(SwapInvariance, HoldsBeyondHalfATurn) {
   const auto [P, Q] = shapes::make_shape("worm-curl");
-  for (const Energy energy : {Energy::frobenius, Energy::similarity, Energy::blend}) {
+  for (const Energy energy : {Energy::F, Energy::R, Energy::blend}) {
     const Interpolation PQ(P, Q, symmetric_defaults(energy, 0.5, P, Q)),
         QP(Q, P, symmetric_defaults(energy, 0.5, Q, P));
     EXPECT_GT(PQ.rotation_angles().maxCoeff(), 2 * std::numbers::pi);

@@ -35,7 +35,7 @@ void expect_valid(const CompatiblePair& pair, const Eigen::Matrix2Xd& source, co
   const MeshPair checked = check_mesh_pair(pair.source, pair.target, "source", "target");
   EXPECT_TRUE(checked.flipped_target_triangles.empty());
   global::InterpolationOptions options;
-  options.energy = global::Energy::frobenius;
+  options.energy = global::Energy::F;
   options.constraints.pinned.push_back({0, 1.0});
   const global::Interpolation interpolation(checked.source, checked.target, options);
   EXPECT_TRUE(interpolation.vertices_at(0.5).allFinite());

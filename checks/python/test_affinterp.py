@@ -56,8 +56,12 @@ def read_obj_vertices(path):
 
 @pytest.mark.parametrize("options, keywords", [
     ([], {}),
-    (["--local", "polar", "--energy", "F", "--pin", "0"], {"homotopy": "polar", "energy": "F", "pins": [0]}),
-    (["--symmetric", "--no-area-weights"], {"symmetric": True, "area_weighted": False}),
+    (["--homotopy", "polar", "--energy", "F", "--pin", "0"], {"homotopy": "polar", "energy": "F", "pins": [0]}),
+    (["--symmetric", "--no-area-weighted"], {"symmetric": True, "area_weighted": False}),
+    (["--energy", "blend", "--blend-weight", "0.25", "--rotation-branch", "principal", "--locus", "1:0,0;1,1",
+      "--edge-direction", "0:1:linear", "--barycentre-locus", "none"],
+     {"energy": "blend", "blend_weight": 0.25, "rotation_branch": "principal", "loci": ["1:0,0;1,1"],
+      "edge_directions": ["0:1:linear"], "barycentre_locus": "none"}),
 ])
 def test_python_and_cli_give_the_same_vertices(tmp_path, options, keywords):
     subprocess.run([CLI, "shapes", "worm-curl", "--out", str(tmp_path / "pair")], check=True, capture_output=True)
@@ -68,6 +72,67 @@ def test_python_and_cli_give_the_same_vertices(tmp_path, options, keywords):
     V1, _ = affinterp.read_mesh(target)
     python = affinterp.Interpolation(V0, V1, F, **keywords).vertices_at(0.3)
     np.testing.assert_array_equal(python, read_obj_vertices(tmp_path / "run" / "frame_0001.obj"))
+
+
+def python_defaults():
+    """Interpolation's keyword defaults, as pybind11 writes them in the constructor's signature."""
+    signature = affinterp.Interpolation.__init__.__doc__.splitlines()[0]
+    keywords = signature[signature.index("*,") + 2:signature.rindex(")")]
+    defaults = {}
+    for item in re.findall(r"(\w+): [^=]+ = ('[^']*'|\[\]|\([^)]*\)|[^,]+)", keywords):
+        name, text = item
+        defaults[name] = text
+    return defaults
+
+
+def test_python_keywords_are_the_cli_options_with_the_same_defaults(tmp_path):
+    """One name per option: each keyword of Interpolation is a key of metrics.json's "options", and its default
+    is what the CLI ran with no option (the engine's InterpolationOptions{}); a front end that types a default
+    or a name of its own fails here."""
+    subprocess.run([CLI, "shapes", "random", "--out", str(tmp_path / "pair")], check=True, capture_output=True)
+    subprocess.run([CLI, "interpolate", "--source", str(tmp_path / "pair" / "source.obj"), "--target",
+                    str(tmp_path / "pair" / "target.obj"), "--out", str(tmp_path / "run"), "--frames", "2",
+                    "--no-figures"], check=True, capture_output=True)
+    import json
+    with open(tmp_path / "run" / "metrics.json") as f:
+        cli = json.load(f)["options"]
+    defaults = python_defaults()
+    assert set(defaults) == {"homotopy", "energy", "rotation_branch", "blend_weight", "blend_weights",
+                             "area_weighted", "symmetric", "pins", "loci", "edge_directions", "barycentre_locus",
+                             "time_range"}, defaults
+    for name, text in defaults.items():
+        assert name in cli, name
+        expected = cli[name]
+        if isinstance(expected, str):
+            assert text == repr(expected), (name, text, expected)
+        elif isinstance(expected, bool):
+            assert text == str(expected), (name, text, expected)
+        elif isinstance(expected, list) and name == "time_range":
+            assert tuple(float(x) for x in text.strip("()").split(",")) == tuple(expected), (name, text)
+        elif isinstance(expected, list):
+            assert text == "[]" and expected == [], (name, text, expected)
+        elif expected is None:
+            assert text == "None", (name, text)
+        else:
+            assert float(text) == expected, (name, text, expected)
+
+
+def test_python_takes_the_engines_names_and_refuses_others(c_to_star):
+    m = c_to_star
+    for keyword, names in [("homotopy", ["exp", "polar", "linear", "svd"]), ("energy", ["F", "S", "R", "blend"]),
+                           ("rotation_branch", ["consistent", "principal"])]:
+        for name in names:
+            affinterp.Interpolation(m["V0"], m["V1"], m["F"], **{keyword: name})
+        one_line_value_error(lambda: affinterp.Interpolation(m["V0"], m["V1"], m["F"], **{keyword: "nope"}),
+                             "'nope'", "expected " + ", ".join(names))
+    one_line_value_error(lambda: affinterp.Interpolation(m["V0"], m["V1"], m["F"], blend_weight=2.0),
+                         "the blend weight w must lie in [0, 1]")
+    one_line_value_error(lambda: affinterp.Interpolation(m["V0"], m["V1"], m["F"], time_range=(1.0, 0.0)),
+                         "t_begin <= t_end")
+    weights = np.full(len(m["F"]), 0.5)
+    affinterp.Interpolation(m["V0"], m["V1"], m["F"], energy="blend", blend_weights=weights)
+    one_line_value_error(lambda: affinterp.Interpolation(m["V0"], m["V1"], m["F"], energy="blend",
+                                                         blend_weights=weights[1:]), "one weight w_i per triangle")
 
 
 def test_bad_meshes_get_one_line_value_errors():

@@ -1,38 +1,39 @@
 #pragma once
-// What a caller of the global interpolation (Kaji §4) asks for, in the words of the `affinterp interpolate`
-// options, with their defaults: the one place the CLI and the Python module turn a request into the
-// engine's InterpolationOptions, so that both give the same vertices for the same input.
-//   local homotopy A_i(t) (Kaji §3): exp (eq. 3), polar (eq. 2), linear, svd
-//   energy E_i: F, S, R (eq. 4), blend;  area weights;  symmetrisation — each defaulting as the engine does
-//   constraints C: the syntax of constraint_spec.hpp; the barycentre follows the straight line by default,
-//   and with E^S, E^R or a blend and no vertex or edge constraint one edge fixes rotation and scale
-//   (theory/global/gauge.hpp)
+// A request for the global interpolation of Kaji §4 as the CLI (`affinterp interpolate`) and the Python module
+// (affinterp.Interpolation) take it: the engine's own InterpolationOptions, whose defaults, names
+// (theory/global/options.hpp's tables) and rules (global::require_valid_options) are the engine's, and the
+// constraints C in their textual syntax (constraint_spec.hpp). Both front ends turn a request into the engine's
+// options here, so that both give the same vertices for the same input, and describe it in the same words
+// (metrics.json's "options").
 #include "theory/global/interpolation.hpp"
+
+#include <nlohmann/json.hpp>
 
 #include <string>
 #include <vector>
 
 namespace affinterp::io {
 
-/// Every default is the engine's (global::InterpolationOptions{}): one place decides it, the CLI and Python read it.
 struct InterpolationRequest {
-  std::string local = global::to_string(global::InterpolationOptions{}.homotopy),
-              energy = global::to_string(global::InterpolationOptions{}.energy),
-              rotation_branch = global::to_string(global::InterpolationOptions{}.rotation_branch);
-  double blend_weight = global::InterpolationOptions{}.blend_weight;
-  Eigen::VectorXd blend_weights;  ///< w_i per triangle; empty: blend_weight for every triangle
-  bool area_weights = global::InterpolationOptions{}.area_weighted,
-       symmetric = global::InterpolationOptions{}.symmetric;
-  std::vector<std::string> pins, loci, edges;
-  /// The gauge of translation: a request's choice, as the engine's Constraints are what its caller asks for.
-  std::string barycentre = "linear";
-  double t_begin = global::InterpolationOptions{}.t_begin, t_end = global::InterpolationOptions{}.t_end;
+  /// Everything but the constraints, defaults included. Its `constraints` are replaced by the ones below.
+  global::InterpolationOptions options;
+  /// Constraint specifications (constraint_spec.hpp), one per term.
+  std::vector<std::string> pins, loci, edge_directions;
+  /// The barycentre's path: the gauge of translation, "linear" (source to target) unless asked otherwise.
+  std::string barycentre_locus = "linear";
 };
 
-/// The engine's options for the pair (source counter-clockwise, as check_mesh_pair leaves it), the default
-/// edge direction included (last in constraints.edges). Throws std::invalid_argument with a one-line message
-/// on a bad name or constraint.
+/// The engine's options for the pair (source counter-clockwise, as check_mesh_pair leaves it): the request's
+/// options with its constraints parsed, and with E^S, E^R or a blend and no vertex or edge constraint the
+/// default edge direction that fixes rotation and scale (theory/global/gauge.hpp), last in constraints.edges.
+/// Throws std::invalid_argument with a one-line message on a bad constraint; the options themselves are the
+/// engine's to check (global::Interpolation refuses them).
 global::InterpolationOptions interpolation_options(const InterpolationRequest& request, const global::Mesh& source,
                                                    const global::Mesh& target);
+
+/// The options a run used, as metrics.json's "options" names them (the same names as the CLI's options and
+/// the Python keywords): homotopy, energy, rotation_branch, blend_weight, area_weighted, symmetric, pins,
+/// loci, edge_directions, barycentre_locus, time_range, and default_edge_direction when one was added.
+nlohmann::json options_json(const InterpolationRequest& request, const global::InterpolationOptions& used);
 
 }  // namespace affinterp::io

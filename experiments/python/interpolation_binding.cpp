@@ -1,6 +1,7 @@
-// affinterp.Interpolation: the global interpolation of Kaji §4 between two compatible meshes, with the
-// defaults of `affinterp interpolate` (experiments/inputs/interpolation_request.hpp) and its input checks
-// (experiments/inputs/mesh_pair.hpp), so that Python and the CLI give the same vertices.
+// affinterp.Interpolation: the global interpolation of Kaji §4 between two compatible meshes. Its keywords are
+// the engine's options under the names of `affinterp interpolate` and metrics.json, their defaults read from
+// global::InterpolationOptions{}, their rules the engine's; the request and the input checks are the CLI's
+// (experiments/inputs/interpolation_request.hpp, mesh_pair.hpp), so that Python and the CLI give the same vertices.
 #include "experiments/inputs/interpolation_request.hpp"
 #include "experiments/inputs/mesh_file.hpp"
 #include "experiments/inputs/mesh_pair.hpp"
@@ -10,16 +11,48 @@
 #include <pybind11/stl.h>
 
 #include <memory>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <vector>
 
 namespace affinterp::python {
 
 namespace {
 
+/// The keywords of Interpolation(): the engine's options under the names the CLI and metrics.json use.
+struct Keywords {
+  std::string homotopy, energy, rotation_branch;
+  double blend_weight;
+  std::optional<std::vector<double>> blend_weights;
+  bool area_weighted, symmetric;
+  std::vector<py::object> pins;
+  std::vector<std::string> loci, edge_directions;
+  std::string barycentre_locus;
+  std::pair<double, double> time_range;
+};
+
+/// The request the CLI would make for the same keywords (experiments/inputs/interpolation_request.hpp).
+io::InterpolationRequest request_of(const Keywords& k) {
+  io::InterpolationRequest request;
+  global::InterpolationOptions& options = request.options;
+  options.homotopy = global::parse_option<global::LocalHomotopy>(k.homotopy);
+  options.energy = global::parse_option<global::Energy>(k.energy);
+  options.rotation_branch = global::parse_option<global::RotationBranch>(k.rotation_branch);
+  options.blend_weight = k.blend_weight;
+  if (k.blend_weights)
+    options.blend_weights =
+        Eigen::Map<const Eigen::VectorXd>(k.blend_weights->data(), static_cast<Eigen::Index>(k.blend_weights->size()));
+  options.area_weighted = k.area_weighted, options.symmetric = k.symmetric;
+  std::tie(options.t_begin, options.t_end) = k.time_range;
+  for (const py::object& pin : k.pins) request.pins.push_back(py::str(pin));
+  request.loci = k.loci, request.edge_directions = k.edge_directions, request.barycentre_locus = k.barycentre_locus;
+  return request;
+}
+
 class Interpolation {
  public:
-  Interpolation(const py::object& V0, const py::object& V1, const py::object& F, const std::string& homotopy,
-                const std::string& energy, bool symmetric, bool area_weighted, const std::vector<py::object>& pins,
-                std::pair<double, double> t_range, const std::string& rotation_branch, double blend_weight) {
+  Interpolation(const py::object& V0, const py::object& V1, const py::object& F, const Keywords& keywords) {
     global::Mesh source{points(V0, "V0"), triangles(F, "F")}, target{points(V1, "V1"), source.triangles};
     io::MeshPair pair;
     try {
@@ -27,17 +60,9 @@ class Interpolation {
     } catch (const io::MeshFileError& e) {
       value_error(e.what());
     }
-    io::InterpolationRequest request;
-    request.local = homotopy, request.energy = energy, request.symmetric = symmetric;
-    request.area_weights = area_weighted, request.rotation_branch = rotation_branch;
-    request.blend_weight = blend_weight;
-    for (const py::object& pin : pins) request.pins.push_back(py::str(pin));
-    request.t_begin = t_range.first, request.t_end = t_range.second;
-    if (!(request.t_begin <= request.t_end) || !std::isfinite(request.t_begin) || !std::isfinite(request.t_end))
-      value_error("t_range: expected finite (t0, t1) with t0 <= t1");
     try {
-      engine_ = std::make_unique<global::Interpolation>(pair.source, pair.target,
-                                                        io::interpolation_options(request, pair.source, pair.target));
+      engine_ = std::make_unique<global::Interpolation>(
+          pair.source, pair.target, io::interpolation_options(request_of(keywords), pair.source, pair.target));
     } catch (const global::RefusedProblem& e) {
       value_error(std::string("refused: ") + e.what());
     } catch (const std::invalid_argument& e) {
@@ -105,36 +130,72 @@ class Interpolation {
 
 }  // namespace
 
-void bind_interpolation(py::module_& m) {
-  py::class_<Interpolation>(m, "Interpolation",
-                            R"(Global interpolation (Kaji et al. 2012, §4) between compatible meshes.
+/// The class's docstring: the parameters' choices and meanings from the engine's name tables.
+std::string docstring() {
+  std::string doc = R"(Global interpolation (Kaji et al. 2012, §4) between compatible meshes.
 
 For each time t the vertices v_1(t) ... v_n(t) minimise the global error
     E_t = sum_i E_i(A_i(t), B_i(t)) + C(v(t)),
 A_i(t) the local homotopy of triangle tau_i (§3) from I to the affine map A_i of tau_i (eq. 1), B_i(t)
 the linear part of the interpolated map on tau_i, E_i the local error and C the constraints.
 
-Parameters (defaults as `affinterp interpolate`):
-  V0, V1         (n, 2) float arrays: source vertices P and target vertices Q
-  F              (m, 3) integer array: the triangles, shared by P and Q (0-based)
-  homotopy       'exp' (A^E = R_{t theta} S^t, eq. 3), 'polar' (eq. 2), 'linear', 'svd'
-  energy         'R' (E^R, eq. 4), 'F' (Frobenius), 'S' (similarity of points), 'blend'
-  symmetric      E'(t) = E(t) + E^{-1}(1 - t)
-  area_weighted  weigh each E_i by the area of its source triangle
-  pins           vertices (int, or 'V@C' strings) that move on the straight line p_V -> q_V
-  t_range        (t0, t1): the times vertices_at accepts (extrapolation beyond [0, 1] allowed)
-  rotation_branch  'consistent' or 'principal'
-  blend_weight   w in w E^F + (1 - w) E^R
-With E^S, E^R or a blend and no pins, one edge fixes rotation and scale and the barycentre follows the
-straight line, as in the CLI. Bad input (shapes, NaN, degenerate or flipped triangles, ...) raises
-ValueError with the CLI's one-line message.)")
-      .def(
-          py::init<const py::object&, const py::object&, const py::object&, const std::string&, const std::string&,
-                   bool, bool, const std::vector<py::object>&, std::pair<double, double>, const std::string&, double>(),
-          py::arg("V0"), py::arg("V1"), py::arg("F"), py::kw_only(), py::arg("homotopy") = "exp",
-          py::arg("energy") = "R", py::arg("symmetric") = false, py::arg("area_weighted") = true,
-          py::arg("pins") = std::vector<py::object>{}, py::arg("t_range") = std::pair<double, double>{0.0, 1.0},
-          py::arg("rotation_branch") = "consistent", py::arg("blend_weight") = 0.5)
+Parameters (the names, defaults and rules of `affinterp interpolate`, which are the engine's):
+  V0, V1            (n, 2) float arrays: source vertices P and target vertices Q
+  F                 (m, 3) integer array: the triangles, shared by P and Q (0-based)
+)";
+  const auto choices = [](auto values) {
+    std::string text;
+    for (const auto& named : values)
+      text += "\n                      '" + std::string(named.name) + "': " + std::string(named.meaning);
+    return text;
+  };
+  doc += "  homotopy          the local homotopy A_i(t) (§3):" +
+         choices(global::OptionNames<global::LocalHomotopy>::values);
+  doc += "\n  energy            the local error E_i (§4):" + choices(global::OptionNames<global::Energy>::values);
+  doc += "\n  rotation_branch   the polar angles of the A_i:" +
+         choices(global::OptionNames<global::RotationBranch>::values);
+  doc += R"(
+  blend_weight      w in w E^F + (1 - w) E^R, in [0, 1]
+  blend_weights     (m,) array of per-triangle w_i in [0, 1] (instead of blend_weight)
+  area_weighted     weigh each E_i by the area of its source triangle
+  symmetric         E'(t) = E(t) + E^{-1}(1 - t)
+  pins              vertices (int, or 'V@C' strings) that move on the straight line p_V -> q_V
+  loci              'V[@C]:x1,y1;x2,y2;...' strings: vertex V follows the spline through the points
+  edge_directions   'I:J[:homotopy|linear][@C]' strings: edge v_I - v_J follows the local homotopy or a line
+  barycentre_locus  'linear[@C]', 'none' or 'x1,y1;...[@C]': the barycentre's path
+  time_range        (t0, t1), t0 <= t1: the times vertices_at accepts (extrapolation beyond [0, 1] allowed)
+With E^S, E^R or a blend and no pins, loci or edge directions, one edge fixes rotation and scale, as in the
+CLI. Bad input (shapes, NaN, degenerate or flipped triangles, unknown names, ...) raises ValueError with the
+CLI's one-line message.)";
+  return doc;
+}
+
+void bind_interpolation(py::module_& m) {
+  const global::InterpolationOptions defaults;
+  const io::InterpolationRequest request_defaults;
+  py::class_<Interpolation>(m, "Interpolation", docstring().c_str())
+      .def(py::init([](const py::object& V0, const py::object& V1, const py::object& F, std::string homotopy,
+                       std::string energy, std::string rotation_branch, double blend_weight,
+                       std::optional<std::vector<double>> blend_weights, bool area_weighted, bool symmetric,
+                       std::vector<py::object> pins, std::vector<std::string> loci,
+                       std::vector<std::string> edge_directions, std::string barycentre_locus,
+                       std::pair<double, double> time_range) {
+             return std::make_unique<Interpolation>(
+                 V0, V1, F,
+                 Keywords{std::move(homotopy), std::move(energy), std::move(rotation_branch), blend_weight,
+                          std::move(blend_weights), area_weighted, symmetric, std::move(pins), std::move(loci),
+                          std::move(edge_directions), std::move(barycentre_locus), time_range});
+           }),
+           py::arg("V0"), py::arg("V1"), py::arg("F"), py::kw_only(),
+           py::arg("homotopy") = global::to_string(defaults.homotopy),
+           py::arg("energy") = global::to_string(defaults.energy),
+           py::arg("rotation_branch") = global::to_string(defaults.rotation_branch),
+           py::arg("blend_weight") = defaults.blend_weight, py::arg("blend_weights") = py::none(),
+           py::arg("area_weighted") = defaults.area_weighted, py::arg("symmetric") = defaults.symmetric,
+           py::arg("pins") = std::vector<py::object>{}, py::arg("loci") = std::vector<std::string>{},
+           py::arg("edge_directions") = std::vector<std::string>{},
+           py::arg("barycentre_locus") = request_defaults.barycentre_locus,
+           py::arg("time_range") = std::pair<double, double>{defaults.t_begin, defaults.t_end})
       .def("vertices_at", &Interpolation::vertices_at, py::arg("t"),
            "v(t) as an (n, 2) array: the minimiser of E_t. ValueError outside t_range.")
       .def("frames", &Interpolation::frames, py::arg("times"),

@@ -20,7 +20,7 @@ py::array_t<double> homotopy_at(const py::object& A_in, const py::object& times,
   if (!single) value_error("A: expected one 2x2 matrix, got shape (k, 2, 2)");
   global::LocalHomotopy homotopy{};
   try {
-    homotopy = global::parse_local_homotopy(name);
+    homotopy = global::parse_option<global::LocalHomotopy>(name);
   } catch (const std::invalid_argument& e) {
     value_error(e.what());
   }

@@ -37,13 +37,13 @@ std::vector<TriangleTerm> triangle_terms(const Mesh& reference, const Interpolat
 /// E_i(A, B(x)) of one term, times its weight.
 TriangleQuadratic<double> local_error(Energy energy, const TriangleTerm& term, const Eigen::Matrix2d& A) {
   switch (energy) {
-    case Energy::frobenius:
+    case Energy::F:
       return frobenius_quadratic(term.D, A) * term.weight;
-    case Energy::similarity:
+    case Energy::R:
       return similarity_quadratic(term.D, A) * term.weight;
     case Energy::blend:
       return blend_quadratic(term.D, A, term.frobenius_share) * term.weight;
-    case Energy::procrustes:
+    case Energy::S:
       return procrustes_quadratic(term.corners, A) * term.weight;
   }
   return {};
@@ -62,7 +62,7 @@ double similarity_residual(const Matrix& X, const Matrix& Y) {
 /// E^R = min ‖s R_δ A − B‖², and E^S = min ‖s R_δ X − Y‖² with X = A P̃, Y = V Π (procrustes_quadratic).
 std::pair<double, double> local_error_value(Energy energy, const TriangleTerm& term, const Eigen::Matrix2d& A,
                                             const Eigen::Matrix<double, 2, 3>& V) {
-  if (energy == Energy::procrustes) {
+  if (energy == Energy::S) {
     const Eigen::Matrix<double, 2, 3> X = A * (term.corners.colwise() - term.corners.rowwise().mean());
     const Eigen::Matrix<double, 2, 3> Y = V.colwise() - V.rowwise().mean();
     return {0.0, term.weight * similarity_residual(X, Y)};
@@ -88,7 +88,7 @@ FrameAssembly::FrameAssembly(const Mesh& source, const Mesh& target, const Inter
       stars_(vertex_stars(source.triangles, source.vertex_count())) {
   if (reverse_) reverse_terms_ = triangle_terms(target, options);
   isotropic_ =
-      energy_ == Energy::frobenius ||
+      energy_ == Energy::F ||
       (energy_ == Energy::blend && std::all_of(forward_terms_.begin(), forward_terms_.end(),
                                                [](const TriangleTerm& term) { return term.frobenius_share == 1.0; }));
   build_pattern();
@@ -237,7 +237,7 @@ void FrameAssembly::matrix_at(double t, SparseMatrix& H, std::size_t threads) co
 
 Eigen::VectorXcd FrameAssembly::right_hand_side_at(double t, std::size_t threads) const {
   Eigen::VectorXcd u = Eigen::VectorXcd::Zero(n_);
-  if (energy_ == Energy::frobenius || energy_ == Energy::blend) {  // E^R and E^S have no linear part
+  if (energy_ == Energy::F || energy_ == Energy::blend) {  // E^R and E^S have no linear part
     // Each triangle's terms of ũ, then each vertex's sum over its star in triangle order (the order of a
     // plain loop over the triangles): the same sums whatever the number of threads.
     const std::size_t m = forward_terms_.size();

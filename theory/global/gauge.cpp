@@ -22,7 +22,7 @@ std::optional<EdgeDirection> default_edge_direction(const Mesh& source, const Me
   const Constraints& given = options.constraints;
   // E^F is not invariant under scaling; a caller who constrains a vertex or an edge chooses the gauge
   // (and the engine refuses one that leaves the collapse: well_posedness.hpp)
-  if (options.energy == Energy::frobenius || !given.pinned.empty() || !given.loci.empty() || !given.edges.empty())
+  if (options.energy == Energy::F || !given.pinned.empty() || !given.loci.empty() || !given.edges.empty())
     return std::nullopt;
   // a + b = b + a exactly in floating point: (Q, P) scores every triangle as (P, Q) does
   const Eigen::VectorXd score = centrality(source) + centrality(target);

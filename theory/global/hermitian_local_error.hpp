@@ -29,7 +29,7 @@ inline Eigen::Vector3cd complex_columns(const Eigen::Matrix<double, 2, 3>& X) {
 
 /// w of w E^F + (1 − w) E^R: 1 for E^F, the blend's weight, 0 for E^R.
 inline double frobenius_share(Energy energy, double w) {
-  return energy == Energy::frobenius ? 1.0 : energy == Energy::blend ? w : 0.0;
+  return energy == Energy::F ? 1.0 : energy == Energy::blend ? w : 0.0;
 }
 }  // namespace detail
 
@@ -48,7 +48,7 @@ struct HermitianRankOne {
 
 /// H₀ of one triangle's E^F, E^R or blend (D Dᵀ) or E^S (Π), real.
 inline Eigen::Matrix3d hermitian_constant_part(Energy energy, const Eigen::Matrix<double, 3, 2>& D) {
-  if (energy == Energy::procrustes) return Eigen::Matrix3d::Identity() - Eigen::Matrix3d::Constant(1.0 / 3);
+  if (energy == Energy::S) return Eigen::Matrix3d::Identity() - Eigen::Matrix3d::Constant(1.0 / 3);
   return D * D.transpose();
 }
 
@@ -56,7 +56,7 @@ inline Eigen::Matrix3d hermitian_constant_part(Energy energy, const Eigen::Matri
 inline HermitianRankOne hermitian_rank_one_part(Energy energy, const Eigen::Matrix<double, 3, 2>& D,
                                                 const Eigen::Matrix<double, 2, 3>& p, const Eigen::Matrix2d& A,
                                                 double w) {
-  if (energy == Energy::procrustes) {
+  if (energy == Energy::S) {
     const Eigen::Vector3cd x = detail::complex_columns(A * (p.colwise() - p.rowwise().mean()));
     return {x, 1.0 / x.squaredNorm()};
   }
@@ -71,7 +71,7 @@ inline HermitianTriangleForm hermitian_local_error(Energy energy, const Eigen::M
   form.H.real() = hermitian_constant_part(energy, D);
   const HermitianRankOne rank_one = hermitian_rank_one_part(energy, D, p, A, w);
   if (rank_one.c != 0) form.H -= rank_one.c * (rank_one.v * rank_one.v.adjoint());
-  if (const double share = detail::frobenius_share(energy, w); energy != Energy::procrustes && share > 0.0)
+  if (const double share = detail::frobenius_share(energy, w); energy != Energy::S && share > 0.0)
     form.u = -2.0 * share * rank_one.v;  // v = μ
   return form;
 }

@@ -33,19 +33,6 @@ void require_valid_meshes(const Mesh& source, const Mesh& target) {
   check_orientation_preserved(source, target);
 }
 
-void require_valid_options(const InterpolationOptions& options, Eigen::Index triangles) {
-  if (!(options.t_begin <= options.t_end) || !std::isfinite(options.t_begin) || !std::isfinite(options.t_end))
-    throw RefusedProblem("the time range must be finite with t_begin <= t_end");
-  if (options.energy != Energy::blend) return;
-  const bool per_triangle = options.blend_weights.size() > 0;
-  if (per_triangle && options.blend_weights.size() != triangles)
-    throw RefusedProblem("the blend needs one weight w_i per triangle (" + std::to_string(triangles) + "), got " +
-                         std::to_string(options.blend_weights.size()));
-  const Eigen::VectorXd w = per_triangle ? options.blend_weights : Eigen::VectorXd::Constant(1, options.blend_weight);
-  if (!w.allFinite() || (w.array() < 0).any() || (w.array() > 1).any())
-    throw RefusedProblem("blend weights w_i must lie in [0, 1]");
-}
-
 std::vector<Eigen::Matrix2d> linear_parts(const Mesh& from, const Mesh& to) {
   std::vector<Eigen::Matrix2d> A(static_cast<std::size_t>(from.triangle_count()));
   for_each_range(A.size(), ranges_for(A.size(), triangles_per_thread), [&](std::size_t first, std::size_t last) {
@@ -60,7 +47,7 @@ std::vector<Eigen::Matrix2d> linear_parts(const Mesh& from, const Mesh& to) {
 }
 
 bool has_frobenius_part(const InterpolationOptions& options) {
-  if (options.energy == Energy::frobenius) return true;
+  if (options.energy == Energy::F) return true;
   if (options.energy != Energy::blend) return false;
   return options.blend_weights.size() > 0 ? (options.blend_weights.array() > 0).any() : options.blend_weight > 0;
 }

@@ -20,11 +20,11 @@ std::string to_string(LocalHomotopy homotopy) {
 
 std::string to_string(Energy energy) {
   switch (energy) {
-    case Energy::frobenius:
+    case Energy::F:
       return "F";
-    case Energy::procrustes:
+    case Energy::S:
       return "S";
-    case Energy::similarity:
+    case Energy::R:
       return "R";
     case Energy::blend:
       return "blend";
@@ -49,7 +49,7 @@ LocalHomotopy parse_local_homotopy(const std::string& name) {
 }
 
 Energy parse_energy(const std::string& name) {
-  for (auto e : {Energy::frobenius, Energy::procrustes, Energy::similarity, Energy::blend})
+  for (auto e : {Energy::F, Energy::S, Energy::R, Energy::blend})
     if (to_string(e) == name) return e;
   throw std::invalid_argument("unknown energy '" + name + "' (F, S, R, blend)");
 }

@@ -5,8 +5,11 @@
 // header of the engine reads these types from here, and the facade interpolation.hpp includes this file.
 #include <Eigen/Core>
 
+#include <array>
 #include <optional>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace affinterp::global {
@@ -20,11 +23,13 @@ enum class LocalHomotopy {
 };
 
 /// The local error function E_i(A_i(t), B_i(t)) (Kaji §4).
+/// Named as the paper names them: E^F, E^S, E^R. E^S and E^R are both invariant under similarity; E^S compares
+/// the triangle's points, E^R the linear maps.
 enum class Energy {
-  frobenius,  ///< E^F = ‖A − B‖²_F  [ACOL00]
-  procrustes,  ///< E^S = min_{s,δ} Σ_{k∈τ} ‖s R_δ A p_k − B p_k‖²  [WW95], p_k taken from the triangle's centroid
-  similarity,  ///< E^R = min_{s,δ} ‖s R_δ A − B‖²_F, eq. (4), in the Appendix's closed form
-  blend,       ///< w_i E^F + (1 − w_i) E^R ("Improvements")
+  F,  ///< E^F = ‖A − B‖²_F  [ACOL00]
+  S,  ///< E^S = min_{s,δ} Σ_{k∈τ} ‖s R_δ A p_k − B p_k‖²  [WW95], p_k taken from the triangle's centroid
+  R,  ///< E^R = min_{s,δ} ‖s R_δ A − B‖²_F, eq. (4), in the Appendix's closed form
+  blend,  ///< w_i E^F + (1 − w_i) E^R ("Improvements")
 };
 
 /// How the polar angle θ_i of each A_i is chosen among θ_i + 2πk (the rotation consistency problem).
@@ -82,7 +87,7 @@ enum class SparseBackEnd {
 
 struct InterpolationOptions {
   LocalHomotopy homotopy = LocalHomotopy::exp;
-  Energy energy = Energy::similarity;
+  Energy energy = Energy::R;
   RotationBranch rotation_branch = RotationBranch::consistent;
   /// w_i of the blend, one per triangle; empty means `blend_weight` for every triangle.
   Eigen::VectorXd blend_weights;
@@ -102,13 +107,83 @@ struct InterpolationOptions {
   std::optional<SparseBackEnd> back_end;
 };
 
-std::string to_string(LocalHomotopy homotopy);
-std::string to_string(Energy energy);
-std::string to_string(RotationBranch branch);
-/// Parses the names used by to_string ("exp", "polar", "linear", "svd"; "F", "S", "R", "blend";
-/// "principal", "consistent"). Throws std::invalid_argument on anything else.
-LocalHomotopy parse_local_homotopy(const std::string& name);
-Energy parse_energy(const std::string& name);
-RotationBranch parse_rotation_branch(const std::string& name);
+/// One value of an option enum, the one name the CLI, the Python module and metrics.json give it, and what it
+/// means (for help texts).
+template <class Enum>
+struct NamedValue {
+  Enum value;
+  std::string_view name;
+  std::string_view meaning;
+};
+
+/// What an option enum is called and its values' names: the one table to_string, parse_option and the front
+/// ends' choices read.
+template <class Enum>
+struct OptionNames;
+
+template <>
+struct OptionNames<LocalHomotopy> {
+  static constexpr std::string_view what = "local homotopy";
+  static constexpr std::array<NamedValue<LocalHomotopy>, 4> values{{
+      {LocalHomotopy::exp, "exp", "R^t S^t, Kaji eq. (3)"},
+      {LocalHomotopy::polar, "polar", "R^t ((1-t) I + t S), Kaji eq. (2) [ACOL00]"},
+      {LocalHomotopy::linear, "linear", "(1-t) I + t A"},
+      {LocalHomotopy::svd, "svd", "R_{t alpha} ((1-t) I + t D) R_{t beta} for A = R_alpha D R_beta"},
+  }};
+};
+
+template <>
+struct OptionNames<Energy> {
+  static constexpr std::string_view what = "energy";
+  static constexpr std::array<NamedValue<Energy>, 4> values{{
+      {Energy::F, "F", "E^F, the Frobenius distance of A and B [ACOL00]"},
+      {Energy::S, "S", "E^S, the triangle's points up to similarity [WW95]"},
+      {Energy::R, "R", "E^R, the linear maps up to similarity, Kaji eq. (4)"},
+      {Energy::blend, "blend", "w E^F + (1 - w) E^R"},
+  }};
+};
+
+template <>
+struct OptionNames<RotationBranch> {
+  static constexpr std::string_view what = "rotation branch";
+  static constexpr std::array<NamedValue<RotationBranch>, 2> values{{
+      {RotationBranch::consistent, "consistent", "each angle within pi of its neighbour's, so it may exceed pi"},
+      {RotationBranch::principal, "principal", "each angle in (-pi, pi]"},
+  }};
+};
+
+template <class Enum>
+concept OptionEnum = requires {
+  OptionNames<Enum>::values;
+};
+
+template <OptionEnum Enum>
+std::string to_string(Enum value) {
+  for (const auto& named : OptionNames<Enum>::values)
+    if (named.value == value) return std::string(named.name);
+  return "?";
+}
+
+/// The names of `Enum`'s values in the table's order, comma separated ("exp, polar, linear, svd").
+template <OptionEnum Enum>
+std::string option_choices() {
+  std::string list;
+  for (const auto& named : OptionNames<Enum>::values) list += (list.empty() ? "" : ", ") + std::string(named.name);
+  return list;
+}
+
+/// The value named `name` (exactly as to_string writes it). Throws std::invalid_argument naming the choices.
+template <OptionEnum Enum>
+Enum parse_option(std::string_view name) {
+  for (const auto& named : OptionNames<Enum>::values)
+    if (named.name == name) return named.value;
+  throw std::invalid_argument("unknown " + std::string(OptionNames<Enum>::what) + " '" + std::string(name) +
+                              "' (expected " + option_choices<Enum>() + ")");
+}
+
+/// Throws RefusedProblem (mesh_validation.hpp) unless the options are ones the engine accepts for a mesh of
+/// `triangles` triangles: the one place their rules live (a finite time range with t_begin <= t_end; blend
+/// weights in [0, 1], one per triangle when given per triangle). The front ends leave these checks to it.
+void require_valid_options(const InterpolationOptions& options, Eigen::Index triangles);
 
 }  // namespace affinterp::global

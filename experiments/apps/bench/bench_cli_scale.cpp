@@ -35,7 +35,7 @@ constexpr int cols = 2000, rows = 250;
 constexpr int short_run = 2, batch = 8;
 
 /// The long CLI run's frames beyond the short run's.
-int extra_frames(Energy energy) { return energy == Energy::frobenius ? 32 : 8; }
+int extra_frames(Energy energy) { return energy == Energy::F ? 32 : 8; }
 
 struct Workload {
   shapes::Spiral pair;
@@ -115,12 +115,12 @@ void register_frame(const std::string& name, Frame frame) {
 
 void register_all() {
   const std::string size = std::to_string(2 * cols * rows);
-  for (const Energy energy : {Energy::frobenius, Energy::similarity}) {
+  for (const Energy energy : {Energy::F, Energy::R}) {
     const std::string name = global::to_string(energy) + "/" + size;
     register_frame("cli_frame/" + name,
                    [energy](benchmark::State& state) { cli_frame(state, energy, fs::temp_directory_path()); });
     // E^F's frames are the cheap ones, where writing weighs: the same runs into memory show how much.
-    if (energy == Energy::frobenius && fs::is_directory(memory_folder))
+    if (energy == Energy::F && fs::is_directory(memory_folder))
       register_frame("cli_frame_memory/" + name,
                      [energy](benchmark::State& state) { cli_frame(state, energy, memory_folder); });
     register_frame("engine_frame/" + name, [energy](benchmark::State& state) { engine_frame(state, energy); });

@@ -174,12 +174,12 @@ void repeated(benchmark::internal::Benchmark* b) {
 
 void register_all() {
   const std::string mesh = workload().name;
-  for (const Energy energy : {Energy::frobenius, Energy::similarity, Energy::procrustes, Energy::blend}) {
+  for (const Energy energy : {Energy::F, Energy::R, Energy::S, Energy::blend}) {
     const std::string e = global::to_string(energy);
     benchmark::RegisterBenchmark(("setup/" + e + "/" + mesh).c_str(), set_up, energy)->Apply(repeated);
     benchmark::RegisterBenchmark(("frame/" + e + "/" + mesh).c_str(), frame, energy)->Apply(repeated);
   }
-  for (const Energy energy : {Energy::frobenius, Energy::similarity}) {
+  for (const Energy energy : {Energy::F, Energy::R}) {
     const std::string e = global::to_string(energy);
     benchmark::RegisterBenchmark(("frame_refactor/" + e + "/" + mesh).c_str(), frame_refactor, energy)->Apply(repeated);
     benchmark::RegisterBenchmark(("batch_frames/" + e + "/" + mesh).c_str(), frames_batched, energy)->Apply(repeated);
@@ -187,8 +187,8 @@ void register_all() {
   const std::pair<FramePart, const char*> rhs{FramePart::right_hand_side, "frame_rhs"},
       assembly{FramePart::assembly, "frame_assembly"}, factor{FramePart::factorisation, "frame_factor"},
       solve{FramePart::solve, "frame_solve"};
-  for (const auto& [energy, parts] : {std::pair{Energy::frobenius, std::vector{rhs, solve}},
-                                      {Energy::similarity, std::vector{assembly, factor, solve}}})
+  for (const auto& [energy, parts] :
+       {std::pair{Energy::F, std::vector{rhs, solve}}, {Energy::R, std::vector{assembly, factor, solve}}})
     for (const auto& [part, name] : parts)
       benchmark::RegisterBenchmark((std::string(name) + "/" + global::to_string(energy) + "/" + mesh).c_str(),
                                    frame_part, energy, part)

@@ -117,7 +117,7 @@ void frames_batched(benchmark::State& state, Energy energy, int level, std::opti
 template <class Scalar>
 Eigen::SparseMatrix<Scalar> frame_matrix(int level) {
   const shapes::MeshPairShapes& pair = workload(level);
-  const Energy energy = std::is_same_v<Scalar, double> ? Energy::frobenius : Energy::similarity;
+  const Energy energy = std::is_same_v<Scalar, double> ? Energy::F : Energy::R;
   const global::InterpolationOptions options = bench::cli_options(energy, pair.source, pair.target);
   const bench::AssembledPair assembled(pair.source, pair.target, options);
   const global::FrameAssembly& assembly = assembled.assembly();
@@ -182,7 +182,7 @@ void register_all() {
   if (global::has_cholmod()) back_ends.push_back(global::SparseBackEnd::cholmod);
   for (int level = coarsest_level; level <= finest_level; ++level) {
     const std::string size = std::to_string(workload(level).source.triangle_count());
-    for (const Energy energy : {Energy::frobenius, Energy::similarity}) {
+    for (const Energy energy : {Energy::F, Energy::R}) {
       const std::string name = global::to_string(energy) + "/" + size;
       benchmark::RegisterBenchmark(("scale_setup/" + name).c_str(), set_up, energy, level, std::nullopt)
           ->Apply(repeated);
@@ -196,7 +196,7 @@ void register_all() {
             ->Apply(compared);
         benchmark::RegisterBenchmark(("backend_frame/" + name + suffix).c_str(), frame, energy, level, back_end)
             ->Apply(compared);
-        const bool real = energy == Energy::frobenius;
+        const bool real = energy == Energy::F;
         benchmark::RegisterBenchmark(("backend_factor/" + name + suffix).c_str(),
                                      real ? backend_factor<double> : backend_factor<std::complex<double>>, level,
                                      back_end)

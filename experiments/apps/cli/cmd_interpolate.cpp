@@ -1,6 +1,9 @@
 // `affinterp interpolate`: global interpolation (Kaji §4) between a source and a target mesh, written as
-// OBJ frames, a filmstrip (PNG + SVG), an animated GIF, an interactive viewer and per-frame metrics.
+// OBJ frames (or one frames.npy), a filmstrip (PNG + SVG), an animated GIF, an interactive viewer and
+// per-frame metrics. The engine's options are bound straight into global::InterpolationOptions under the
+// names of theory/global/options.hpp; the engine decides their defaults and rules.
 #include "experiments/apps/cli/command.hpp"
+#include "experiments/apps/cli/enum_option.hpp"
 #include "experiments/inputs/constraint_spec.hpp"
 #include "experiments/inputs/frames_npy.hpp"
 #include "experiments/inputs/interpolation_request.hpp"
@@ -34,22 +37,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// The engine's defaults (theory/global/options.hpp decides them; the options below only spell them).
-const global::InterpolationOptions engine_defaults{};
-
-std::string default_time_range() {
-  std::ostringstream range;
-  range << engine_defaults.t_begin << ':' << engine_defaults.t_end;
-  return range.str();
-}
-
 struct InterpolateOptions {
   std::string source, target, out;
   int frames = 30;
-  io::InterpolationRequest engine;  ///< the engine's options and their defaults, shared with the Python module
-  std::string weights_file;
+  io::InterpolationRequest request;  ///< the engine's options (its defaults) and the constraints' specifications
+  std::string blend_weights;         ///< a file of w_i, one per triangle (empty: blend_weight for all)
   bool allow_flipped_target = false, figures = true;
-  std::string time_range = default_time_range();
+  std::string time_range;            ///< T0:T1; empty: the engine's t_begin:t_end
   std::optional<std::string> times;  ///< --times T1,T2,...: exactly these frames (not with --frames, --time-range)
   std::string format = "obj";        ///< frame files: obj (one per frame) or npy (frames.npy, all of them)
   std::string metrics = "all";       ///< per-frame metrics in metrics.json: all, energy, quality or none
@@ -58,13 +52,13 @@ struct InterpolateOptions {
 /// Frames drawn in the filmstrip: at most 8, evenly spread, first and last included.
 constexpr std::size_t filmstrip_frames = 8;
 
+/// T0:T1 as two reals; whether T0 <= T1 is the engine's rule (global::require_valid_options).
 std::pair<double, double> parse_time_range(const std::string& text) {
   const auto colon = text.find(':');
   double t0 = 0, t1 = 0;
   std::istringstream a(text.substr(0, colon)), b(colon == std::string::npos ? "" : text.substr(colon + 1));
-  if (colon == std::string::npos || !(a >> t0) || !(b >> t1) || !a.eof() || !b.eof() || !std::isfinite(t0) ||
-      !std::isfinite(t1) || t0 >= t1)
-    throw CommandFailed("--time-range '" + text + "': expected T0:T1 with T0 < T1 (e.g. 0:1 or -0.5:1.5)", usage_error);
+  if (colon == std::string::npos || !(a >> t0) || !(b >> t1) || !a.eof() || !b.eof())
+    throw CommandFailed("--time-range '" + text + "': expected T0:T1 (e.g. 0:1 or -0.5:1.5)", usage_error);
   return {t0, t1};
 }
 
@@ -86,34 +80,50 @@ std::vector<double> parse_times(const std::string& text) {
   return times;
 }
 
-/// The frames' times: --times as given, else --frames N evenly over --time-range.
-std::vector<double> frame_times(const InterpolateOptions& o) {
-  if (o.times) return parse_times(*o.times);
+/// Sets the engine's time range from --times (their least and largest) or --time-range, and returns the
+/// frames' times: --times as given, else --frames N evenly from t_begin to t_end.
+std::vector<double> frame_times(const InterpolateOptions& o, global::InterpolationOptions& options) {
+  if (o.times) {
+    const std::vector<double> times = parse_times(*o.times);
+    const auto [first, last] = std::minmax_element(times.begin(), times.end());
+    options.t_begin = *first, options.t_end = *last;
+    return times;
+  }
   if (o.frames < 2) throw CommandFailed("--frames must be at least 2", usage_error);
-  const auto [t0, t1] = parse_time_range(o.time_range);
+  if (!o.time_range.empty()) std::tie(options.t_begin, options.t_end) = parse_time_range(o.time_range);
   std::vector<double> times;
-  for (int k = 0; k < o.frames; ++k) times.push_back(t0 + (t1 - t0) * k / (o.frames - 1));
+  for (int k = 0; k < o.frames; ++k)
+    times.push_back(options.t_begin + (options.t_end - options.t_begin) * k / (o.frames - 1));
   return times;
 }
 
-global::InterpolationOptions engine_options(const InterpolateOptions& o, const io::MeshPair& pair,
-                                            const std::vector<double>& times) {
-  io::InterpolationRequest request = o.engine;
-  if (!o.weights_file.empty()) {
+io::MeshPair read_pair(const InterpolateOptions& o) {
+  io::MeshPair pair;
+  try {
+    pair = io::read_mesh_pair(o.source, o.target, {o.allow_flipped_target});
+  } catch (const io::MeshFileError& e) {
+    throw CommandFailed(e.what(), 1);
+  }
+  if (pair.reoriented) std::cerr << "note: the triangles ran clockwise; all were reversed (same shape)\n";
+  if (!pair.flipped_target_triangles.empty())
+    std::cerr << "note: " << pair.flipped_target_triangles.size() << " target triangle(s) flipped (allowed)\n";
+  return pair;
+}
+
+/// The engine's options and the frames' times; the engine itself checks the options (its error is printed).
+std::pair<global::InterpolationOptions, std::vector<double>> engine_options(const InterpolateOptions& o,
+                                                                            const io::MeshPair& pair) {
+  io::InterpolationRequest request = o.request;
+  const std::vector<double> times = frame_times(o, request.options);
+  if (!o.blend_weights.empty()) {
     try {
-      request.blend_weights = io::read_weights(o.weights_file);
+      request.options.blend_weights = io::read_weights(o.blend_weights);
     } catch (const io::MeshFileError& e) {
       throw CommandFailed(e.what(), 1);
     }
-    if (request.blend_weights.size() != pair.source.triangle_count())
-      throw CommandFailed(o.weights_file + ": " + std::to_string(request.blend_weights.size()) + " weights for " +
-                              std::to_string(pair.source.triangle_count()) + " triangles (one w_i per line)",
-                          1);
   }
-  const auto [first, last] = std::minmax_element(times.begin(), times.end());
-  request.t_begin = *first, request.t_end = *last;
   try {
-    return io::interpolation_options(request, pair.source, pair.target);
+    return {io::interpolation_options(request, pair.source, pair.target), times};
   } catch (const std::invalid_argument& e) {
     throw CommandFailed(e.what(), usage_error);
   }
@@ -141,10 +151,6 @@ nlohmann::json energy_parts_json(const global::FrameEnergy& e, const global::Int
   return parts;
 }
 
-bool energy_has_parts(const global::InterpolationOptions& options) {
-  return options.energy == global::Energy::blend || options.symmetric;
-}
-
 std::string frame_name(int k) {
   std::ostringstream name;
   name << "frame_" << std::setw(4) << std::setfill('0') << k << ".obj";
@@ -157,21 +163,148 @@ std::string time_label(double t) {
   return label.str();
 }
 
-void run(const InterpolateOptions& o) {
-  const std::vector<double> times = frame_times(o);
-  const int frame_count = static_cast<int>(times.size());
-  io::MeshPair pair;
-  try {
-    pair = io::read_mesh_pair(o.source, o.target, {o.allow_flipped_target});
-  } catch (const io::MeshFileError& e) {
-    throw CommandFailed(e.what(), 1);
+/// What one run writes per frame: the frame files, metrics.json's "frames" entries, and what the figures draw.
+class FrameRecorder {
+ public:
+  FrameRecorder(const InterpolateOptions& o, const io::MeshPair& pair, const global::Interpolation& interpolation,
+                const global::InterpolationOptions& options, const fs::path& staging, std::size_t frame_count)
+      : o_(o),
+        pair_(pair),
+        interpolation_(interpolation),
+        options_(options),
+        staging_(staging),
+        energies_(o.figures || o.metrics == "all" || o.metrics == "energy"),
+        quality_(o.figures || o.metrics == "all" || o.metrics == "quality"),
+        frame_(pair.source) {
+    if (pair.reoriented) global::reverse_orientation(frame_);  // frames keep the files' face list
+    if (o.format == "npy") npy_.emplace(staging / "frames.npy", frame_count, pair.source.vertex_count());
+    const std::string name = "E^" + global::to_string(options.energy) + (options.symmetric ? " symmetrised" : "");
+    viewer_.energy = {{name, {}}};  // then the parts, as `view` reads them
   }
-  if (pair.reoriented) std::cerr << "note: the triangles ran clockwise; all were reversed (same shape)\n";
-  if (!pair.flipped_target_triangles.empty())
-    std::cerr << "note: " << pair.flipped_target_triangles.size() << " target triangle(s) flipped (allowed)\n";
 
-  const global::InterpolationOptions options = engine_options(o, pair, times);
-  const bool default_edge = options.constraints.edges.size() > o.engine.edges.size();
+  void record(int k, double t, Eigen::Matrix2Xd vertices) {
+    frame_.vertices = std::move(vertices);
+    if (npy_)
+      npy_->append(frame_.vertices);
+    else
+      io::write_obj(frame_, staging_ / frame_name(k));
+    nlohmann::json entry = {{"index", k}, {"t", t}, {"file", npy_ ? "frames.npy" : frame_name(k)}};
+    if (energies_) record_energy(k, t, entry);
+    if (quality_) {
+      const global::FrameMetrics metrics = global::frame_metrics(pair_.source, frame_.vertices);
+      entry.update(metrics_json(metrics));
+      if (o_.figures) viewer_.metrics.push_back(metrics);
+    }
+    frames_.push_back(std::move(entry));
+    if (o_.figures) viewer_.times.push_back(t), viewer_.frames.push_back(frame_.vertices);
+  }
+
+  void close() {
+    if (npy_) npy_->close();
+  }
+
+  const nlohmann::json& frames() const { return frames_; }
+  plots::ViewerRun& viewer_run() { return viewer_; }
+  bool has_quality() const { return quality_; }
+
+ private:
+  void record_energy(int k, double t, nlohmann::json& entry) {
+    const global::FrameEnergy energy = interpolation_.energy_at(t, frame_.vertices);
+    entry["energy"] = finite_or_null(energy.total);
+    std::vector<plots::FrameSeries>& series = viewer_.energy;
+    series[0].values.push_back(energy.total);
+    if (options_.energy != global::Energy::blend && !options_.symmetric) return;
+    entry["energy_parts"] = energy_parts_json(energy, options_);
+    if (k == 0)
+      for (const auto& [name, value] : entry["energy_parts"].items()) series.push_back({name, {}});
+    for (std::size_t s = 1; s < series.size(); ++s)
+      series[s].values.push_back(entry["energy_parts"][series[s].name].get<double>());
+  }
+
+  const InterpolateOptions& o_;
+  const io::MeshPair& pair_;
+  const global::Interpolation& interpolation_;
+  const global::InterpolationOptions& options_;
+  fs::path staging_;
+  bool energies_, quality_;
+  global::Mesh frame_;
+  std::optional<io::NpyFrameWriter> npy_;
+  nlohmann::json frames_ = nlohmann::json::array();
+  plots::ViewerRun viewer_;
+};
+
+/// Solves the frames at `times` in batches of two per hardware thread (vertices_at(times) solves a batch in
+/// parallel, a worker two at a time where the sparse back-end factorises two in one pass), the next batch
+/// solved while this thread hands the last one to `frame_done(k, t, vertices)`.
+template <class FrameDone>
+void solve_in_batches(const global::Interpolation& interpolation, const std::vector<double>& times,
+                      FrameDone frame_done) {
+  const std::size_t batch = 2 * std::max(1u, std::thread::hardware_concurrency());
+  auto solve = [&](std::size_t first) {
+    const std::size_t last = std::min(times.size(), first + batch);
+    return interpolation.vertices_at(std::vector<double>(times.begin() + static_cast<std::ptrdiff_t>(first),
+                                                         times.begin() + static_cast<std::ptrdiff_t>(last)));
+  };
+  std::future<std::vector<Eigen::Matrix2Xd>> next = std::async(std::launch::async, solve, 0);
+  for (std::size_t first = 0; first < times.size(); first += batch) {
+    std::vector<Eigen::Matrix2Xd> solved = next.get();
+    if (first + batch < times.size()) next = std::async(std::launch::async, solve, first + batch);
+    for (std::size_t j = 0; j < solved.size(); ++j)
+      frame_done(static_cast<int>(first + j), times[first + j], std::move(solved[j]));
+  }
+}
+
+/// The filmstrip (at most filmstrip_frames, evenly spread), the animated GIF and the viewer, into `folder`.
+void draw_figures(const fs::path& folder, const global::Mesh& source, const plots::ViewerRun& run,
+                  std::optional<Progress>& progress) {
+  std::vector<plots::MeshFrame> drawn, strip;
+  for (std::size_t k = 0; k < run.frames.size(); ++k) drawn.push_back({run.frames[k], time_label(run.times[k])});
+  const std::size_t n = drawn.size(), shown = std::min(n, filmstrip_frames);
+  for (std::size_t j = 0; j < shown; ++j)
+    strip.push_back(shown == 1 ? drawn[0] : drawn[(2 * j * (n - 1) + shown - 1) / (2 * (shown - 1))]);
+  plots::draw_filmstrip(folder / "filmstrip", source.triangles, strip, run.title);
+  if (progress) progress->advance();
+  plots::write_animation_gif(folder / "animation.gif", source.triangles, drawn);
+  if (progress) progress->advance();
+  plots::write_viewer(folder / "viewer.html", run.title, {run});
+  if (progress) progress->advance();
+}
+
+/// metrics.json: the input, the options under the names the CLI and Python use, and the frames.
+nlohmann::json metrics_document(const InterpolateOptions& o, const io::MeshPair& pair,
+                                const global::InterpolationOptions& options, const std::vector<double>& times,
+                                const nlohmann::json& frames) {
+  nlohmann::json used = io::options_json(o.request, options);
+  used["blend_weights"] = o.blend_weights.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.blend_weights);
+  used["format"] = o.format, used["metrics"] = o.metrics;
+  used["times"] = o.times ? nlohmann::json(times) : nlohmann::json(nullptr);
+  nlohmann::json document = {{"source", o.source},
+                             {"target", o.target},
+                             {"vertices", pair.source.vertex_count()},
+                             {"triangles", pair.source.triangle_count()},
+                             {"reoriented", pair.reoriented},
+                             {"flipped_target_triangles", pair.flipped_target_triangles},
+                             {"options", used},
+                             {"frames", frames}};
+  if (o.figures) document["animation"] = "animation.gif", document["viewer"] = "viewer.html";
+  return document;
+}
+
+/// Moves the staged files into OUT, first removing earlier frames that this run does not replace (a longer
+/// run's, or the other format's), which would mix two runs.
+void commit_output(StagedOutput& staged, const fs::path& out) {
+  std::error_code ignored;
+  if (fs::is_directory(out))
+    for (const auto& entry : fs::directory_iterator(out))
+      if ((entry.path().filename().string().starts_with("frame_") && entry.path().extension() == ".obj") ||
+          entry.path().filename() == "frames.npy")
+        fs::remove(entry.path(), ignored);
+  staged.commit();
+}
+
+void run(const InterpolateOptions& o) {
+  const io::MeshPair pair = read_pair(o);
+  const auto [options, times] = engine_options(o, pair);
   std::unique_ptr<global::Interpolation> interpolation;
   try {
     interpolation = std::make_unique<global::Interpolation>(pair.source, pair.target, options);
@@ -180,205 +313,122 @@ void run(const InterpolateOptions& o) {
   }
 
   StagedOutput staged(o.out);
-  nlohmann::json frames = nlohmann::json::array();
-  const std::string title = fs::path(o.source).filename().string() + " -> " + fs::path(o.target).filename().string() +
-                            " (" + o.engine.local + ", E^" + o.engine.energy + ")";
-  plots::ViewerRun run{title, pair.source, {}, {}, {}, {}};
-  const bool long_run = static_cast<double>(frame_count) * static_cast<double>(pair.source.triangle_count()) > 2e5;
+  FrameRecorder recorder(o, pair, *interpolation, options, staged.staging(), times.size());
+  recorder.viewer_run().title = fs::path(o.source).filename().string() + " -> " +
+                                fs::path(o.target).filename().string() + " (" + global::to_string(options.homotopy) +
+                                ", E^" + global::to_string(options.energy) + ")";
+  recorder.viewer_run().source = pair.source;
+  const bool long_run = static_cast<double>(times.size()) * static_cast<double>(pair.source.triangle_count()) > 2e5;
   std::optional<Progress> progress;  // the frames, then the filmstrip, the GIF and the viewer
-  if (long_run) progress.emplace("interpolate", static_cast<std::size_t>(frame_count) + (o.figures ? 3 : 0));
-  const std::string energy_name = "E^" + o.engine.energy + (o.engine.symmetric ? " symmetrised" : "");
-  std::vector<plots::FrameSeries> energy_series = {{energy_name, {}}};  // then the parts, as `view` reads them
-  global::Mesh frame = pair.source;  // frames keep the files' face list, clockwise ones included
-  if (pair.reoriented) global::reverse_orientation(frame);
-  std::optional<io::NpyFrameWriter> npy;
-  if (o.format == "npy")
-    npy.emplace(staged.staging() / "frames.npy", static_cast<std::size_t>(frame_count), pair.source.vertex_count());
-  // Frames in batches of two per hardware thread (vertices_at(times) solves them in parallel, a worker two at a
-  // time where the sparse back-end factorises two in one pass), the next batch solved while this thread writes
-  // the last one and computes the metrics asked for (all of them when the figures are drawn: the viewer shows them).
-  const bool energies = o.figures || o.metrics == "all" || o.metrics == "energy",
-             quality = o.figures || o.metrics == "all" || o.metrics == "quality";
-  const std::size_t batch = 2 * std::max(1u, std::thread::hardware_concurrency());
-  auto solve = [&](std::size_t first) {
-    const std::size_t last = std::min(times.size(), first + batch);
-    return interpolation->vertices_at(std::vector<double>(times.begin() + static_cast<std::ptrdiff_t>(first),
-                                                          times.begin() + static_cast<std::ptrdiff_t>(last)));
-  };
-  std::future<std::vector<Eigen::Matrix2Xd>> next = std::async(std::launch::async, solve, 0);
-  for (std::size_t first = 0; first < times.size(); first += batch) {
-    std::vector<Eigen::Matrix2Xd> solved = next.get();
-    if (first + batch < times.size()) next = std::async(std::launch::async, solve, first + batch);
-    for (std::size_t j = 0; j < solved.size(); ++j) {
-      const int k = static_cast<int>(first + j);
-      const double t = times[first + j];
-      frame.vertices = std::move(solved[j]);
-      if (npy)
-        npy->append(frame.vertices);
-      else
-        io::write_obj(frame, staged.staging() / frame_name(k));
-      nlohmann::json entry = {{"index", k}, {"t", t}, {"file", npy ? "frames.npy" : frame_name(k)}};
-      if (energies) {
-        const global::FrameEnergy energy = interpolation->energy_at(t, frame.vertices);
-        entry["energy"] = finite_or_null(energy.total);
-        energy_series[0].values.push_back(energy.total);
-        if (energy_has_parts(options)) {
-          entry["energy_parts"] = energy_parts_json(energy, options);
-          if (k == 0)
-            for (const auto& [name, value] : entry["energy_parts"].items()) energy_series.push_back({name, {}});
-          for (std::size_t s = 1; s < energy_series.size(); ++s)
-            energy_series[s].values.push_back(entry["energy_parts"][energy_series[s].name].get<double>());
-        }
-      }
-      if (quality) {
-        const global::FrameMetrics metrics = global::frame_metrics(pair.source, frame.vertices);
-        entry.update(metrics_json(metrics));
-        if (o.figures) run.metrics.push_back(metrics);
-      }
-      frames.push_back(entry);
-      if (o.figures) run.times.push_back(t), run.frames.push_back(frame.vertices);
-      if (progress) progress->advance();
-    }
-  }
-  if (npy) npy->close();
-
-  nlohmann::json document = {{"source", o.source},
-                             {"target", o.target},
-                             {"vertices", pair.source.vertex_count()},
-                             {"triangles", pair.source.triangle_count()},
-                             {"reoriented", pair.reoriented},
-                             {"flipped_target_triangles", pair.flipped_target_triangles},
-                             {"options",
-                              {{"local", o.engine.local},
-                               {"energy", o.engine.energy},
-                               {"rotation_branch", o.engine.rotation_branch},
-                               {"area_weights", o.engine.area_weights},
-                               {"symmetric", o.engine.symmetric},
-                               {"blend_weight", o.engine.blend_weight},
-                               {"weights_file", o.weights_file},
-                               {"pins", o.engine.pins},
-                               {"loci", o.engine.loci},
-                               {"edge_directions", o.engine.edges},
-                               {"barycentre_locus", o.engine.barycentre},
-                               {"time_range", {options.t_begin, options.t_end}},
-                               {"format", o.format},
-                               {"metrics", o.metrics},
-                               {"times", o.times ? nlohmann::json(times) : nlohmann::json(nullptr)}}},
-                             {"frames", frames}};
-  if (default_edge)
-    document["options"]["default_edge_direction"] =
-        std::to_string(options.constraints.edges.back().i) + ":" + std::to_string(options.constraints.edges.back().j);
-  if (o.figures) {
-    run.energy = std::move(energy_series);
-    std::vector<plots::MeshFrame> drawn, strip;
-    for (std::size_t k = 0; k < run.frames.size(); ++k) drawn.push_back({run.frames[k], time_label(run.times[k])});
-    const std::size_t n = drawn.size(), shown = std::min(n, filmstrip_frames);
-    for (std::size_t j = 0; j < shown; ++j)
-      strip.push_back(shown == 1 ? drawn[0] : drawn[(2 * j * (n - 1) + shown - 1) / (2 * (shown - 1))]);
-    plots::draw_filmstrip(staged.staging() / "filmstrip", pair.source.triangles, strip, title);
+  if (long_run) progress.emplace("interpolate", times.size() + (o.figures ? 3 : 0));
+  solve_in_batches(*interpolation, times, [&](int k, double t, Eigen::Matrix2Xd vertices) {
+    recorder.record(k, t, std::move(vertices));
     if (progress) progress->advance();
-    plots::write_animation_gif(staged.staging() / "animation.gif", pair.source.triangles, drawn);
-    document["animation"] = "animation.gif";
-    if (progress) progress->advance();
-    plots::write_viewer(staged.staging() / "viewer.html", title, {run});
-    document["viewer"] = "viewer.html";
-    if (progress) progress->advance();
-  }
+  });
+  recorder.close();
+  if (o.figures) draw_figures(staged.staging(), pair.source, recorder.viewer_run(), progress);
   progress.reset();  // ends the progress line before any other message
-  std::ofstream(staged.staging() / "metrics.json") << document.dump(2) << "\n";
+  std::ofstream(staged.staging() / "metrics.json")
+      << metrics_document(o, pair, options, times, recorder.frames()).dump(2) << "\n";
+  commit_output(staged, o.out);
 
-  // Earlier frames beyond this run's count, or in the other format, would mix two runs: remove them, then
-  // move the new files in.
-  std::error_code ignored;
-  if (fs::is_directory(o.out))
-    for (const auto& entry : fs::directory_iterator(o.out))
-      if ((entry.path().filename().string().starts_with("frame_") && entry.path().extension() == ".obj") ||
-          entry.path().filename() == "frames.npy")
-        fs::remove(entry.path(), ignored);
-  staged.commit();
-  std::cerr << "wrote " << frame_count << " frames to " << o.out;
-  if (quality) {
+  std::cerr << "wrote " << times.size() << " frames to " << o.out;
+  if (recorder.has_quality()) {
     int worst = 0;
-    for (const auto& f : frames) worst = std::max(worst, f["flipped_triangles"].get<int>());
+    for (const auto& f : recorder.frames()) worst = std::max(worst, f["flipped_triangles"].get<int>());
     std::cerr << " (most flipped triangles in a frame: " << worst << ")";
   }
   std::cerr << "\n";
+}
+
+constexpr const char* description =
+    "Interpolate between two compatible 2D triangle meshes (Kaji et al. 2012, §3-4): writes OUT/frame_0000.obj ... "
+    "(or OUT/frames.npy with --format npy), OUT/filmstrip.png/.svg, OUT/animation.gif, OUT/viewer.html "
+    "(interactive; viewer.html#frame=K opens at frame K) and OUT/metrics.json (per frame: t, the minimised energy "
+    "E_t of Kaji §4 with its parts for a blend or --symmetric, and distortion metrics). Vertex indices are 0-based "
+    "(the order of the v lines). Meshes: triangles only (polygons refused), z = 0; when every source triangle runs "
+    "clockwise all are reversed for the computation (frames keep the files' face list); mixed orientations, "
+    "zero-area source triangles and flipped target triangles (unless allowed) are refused. On any error OUT keeps "
+    "its earlier content.";
+
+/// The options the engine takes (global::InterpolationOptions), under its names, defaults and choices.
+void add_engine_options(CLI::App& cmd, InterpolateOptions& o) {
+  global::InterpolationOptions& engine = o.request.options;
+  add_enum_option(cmd, "--homotopy", engine.homotopy, "Local homotopy A_i(t) (Kaji §3)");
+  add_enum_option(cmd, "--energy", engine.energy, "Local error E_i (Kaji §4)");
+  add_enum_option(cmd, "--rotation-branch", engine.rotation_branch, "Polar angles of the A_i");
+  cmd.add_option("--blend-weight", engine.blend_weight, "w in w E^F + (1-w) E^R for --energy blend, in [0, 1]")
+      ->capture_default_str();
+  cmd.add_option("--blend-weights", o.blend_weights,
+                 "File of per-triangle blend weights w_i in [0, 1], one per line (--energy blend)");
+  cmd.add_flag("--area-weighted,!--no-area-weighted", engine.area_weighted,
+               "Weight each E_i by its source triangle's area (--no-area-weighted: the plain sum)")
+      ->default_str(engine.area_weighted ? "true" : "false");
+  cmd.add_flag("--symmetric", engine.symmetric, "Symmetric energy E(t) + E^-1(1-t)")
+      ->default_str(engine.symmetric ? "true" : "false");
+}
+
+/// The constraints C of Kaji §4, in constraint_spec.hpp's syntax.
+void add_constraint_options(CLI::App& cmd, io::InterpolationRequest& request) {
+  cmd.add_option("--pin", request.pins, "V[@C]: vertex V moves on the straight line p_V -> q_V (repeatable)");
+  cmd.add_option("--locus", request.loci,
+                 "V[@C]:x1,y1;x2,y2;...: vertex V follows the spline through the points at t = 0..1 (repeatable)");
+  cmd.add_option(
+      "--edge-direction", request.edge_directions,
+      "I:J[:homotopy|linear][@C]: edge v_I - v_J follows the local homotopy (default) or the straight path. "
+      "With E^S, E^R or blend and no --pin/--locus/--edge-direction, one edge of the source triangle nearest "
+      "the barycentre follows its local homotopy (fixes rotation and scale; listed in metrics.json)");
+  cmd.add_option("--barycentre-locus", request.barycentre_locus,
+                 "linear[@C] | none | x1,y1;x2,y2;...[@C]: the barycentre's path (linear: source to target)")
+      ->capture_default_str();
+}
+
+std::string time_range_text(double t0, double t1) {
+  std::ostringstream text;
+  text << t0 << ':' << t1;
+  return text.str();
+}
+
+/// Which frames, and what is written for them.
+void add_output_options(CLI::App& cmd, InterpolateOptions& o) {
+  const global::InterpolationOptions& engine = o.request.options;
+  CLI::Option* frames =
+      cmd.add_option("--frames", o.frames, "Number of frames N (t = T0 + k (T1-T0)/(N-1))")->capture_default_str();
+  CLI::Option* time_range =
+      cmd.add_option("--time-range", o.time_range,
+                     "T0:T1 with T0 <= T1, the times of the first and last frame (extrapolation allowed)")
+          ->default_str(time_range_text(engine.t_begin, engine.t_end));
+  cmd.add_option("--times", o.times,
+                 "T1,T2,...: write exactly these frames, in this order (any finite reals, extrapolation allowed; "
+                 "instead of --frames and --time-range)")
+      ->excludes(frames)
+      ->excludes(time_range);
+  cmd.add_flag("--allow-flipped-target", o.allow_flipped_target, "Accept target triangles flipped against the source");
+  cmd.add_option("--format", o.format,
+                 "Frame files: obj (OUT/frame_0000.obj ...) or npy (OUT/frames.npy, all frames as one float64 array "
+                 "of shape (frames, vertices, 2): numpy.load; for large meshes)")
+      ->check(CLI::IsMember({"obj", "npy"}))
+      ->capture_default_str();
+  cmd.add_flag("!--no-figures", o.figures, "Write only frames and metrics.json (no filmstrip, GIF or viewer)");
+  cmd.add_option("--metrics", o.metrics,
+                 "What metrics.json gives per frame besides t: all, energy (E_t and its parts), quality (flips, "
+                 "area ratios, distortion) or none; with the figures drawn all are computed (the viewer shows "
+                 "them). Each costs about as much as the frame's solve on large meshes")
+      ->check(CLI::IsMember({"all", "energy", "quality", "none"}))
+      ->capture_default_str();
 }
 
 }  // namespace
 
 void add_interpolate_command(CLI::App& app) {
   auto o = std::make_shared<InterpolateOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "interpolate",
-      "Interpolate between two compatible 2D triangle meshes (Kaji et al. 2012, §3-4): writes OUT/frame_0000.obj ... "
-      "(or OUT/frames.npy with --format npy), "
-      "OUT/filmstrip.png/.svg, OUT/animation.gif, OUT/viewer.html (interactive; viewer.html#frame=K opens at frame K) "
-      "and "
-      "OUT/metrics.json (per frame: t, the minimised energy E_t of Kaji §4 with its parts for a blend or --symmetric, "
-      "and distortion metrics). Vertex indices are 0-based "
-      "(the order of the v lines). Meshes: triangles only (polygons refused), z = 0; when every source triangle runs "
-      "clockwise all are reversed for the computation (frames keep the files' face list); mixed orientations, "
-      "zero-area "
-      "source triangles and flipped target triangles (unless allowed) are refused. On any error OUT keeps its earlier "
-      "content.");
+  CLI::App* cmd = app.add_subcommand("interpolate", description);
   cmd->add_option("--source", o->source, "Source mesh (.obj, .off, .ply, .stl or .ts; z must be 0)")->required();
   cmd->add_option("--target", o->target, "Target mesh with the same triangles")->required();
   cmd->add_option("--out", o->out, "Output folder")->required();
-  CLI::Option* frames =
-      cmd->add_option("--frames", o->frames, "Number of frames N (t = T0 + k (T1-T0)/(N-1))")->capture_default_str();
-  cmd->add_option("--local", o->engine.local, "Local homotopy A_i(t): exp (R^t S^t, eq. 3), polar (eq. 2), linear, svd")
-      ->check(CLI::IsMember({"exp", "polar", "linear", "svd"}))
-      ->capture_default_str();
-  cmd->add_option("--energy", o->engine.energy,
-                  "Local error E_i: F (Frobenius), S (similarity of points), R (eq. 4), blend")
-      ->check(CLI::IsMember({"F", "S", "R", "blend"}))
-      ->capture_default_str();
-  cmd->add_option("--rotation-branch", o->engine.rotation_branch,
-                  "Polar angles: consistent (chosen across neighbours, may exceed pi) or principal (-pi, pi]")
-      ->check(CLI::IsMember({"consistent", "principal"}))
-      ->capture_default_str();
-  cmd->add_option("--blend-weight", o->engine.blend_weight, "w in w E^F + (1-w) E^R for --energy blend")
-      ->check(CLI::Range(0.0, 1.0))
-      ->capture_default_str();
-  cmd->add_option("--weights", o->weights_file,
-                  "File of per-triangle blend weights w_i, one per line (--energy blend)");
-  cmd->add_flag("--area-weights,!--no-area-weights", o->engine.area_weights,
-                "Weight each E_i by its source triangle's area (default; --no-area-weights: plain sum)");
-  cmd->add_flag("--symmetric", o->engine.symmetric, "Symmetric energy E(t) + E^-1(1-t)");
-  cmd->add_option("--pin", o->engine.pins, "V[@C]: vertex V moves on the straight line p_V -> q_V (repeatable)");
-  cmd->add_option("--locus", o->engine.loci,
-                  "V[@C]:x1,y1;x2,y2;...: vertex V follows the spline through the points at t = 0..1 (repeatable)");
-  cmd->add_option(
-      "--edge-direction", o->engine.edges,
-      "I:J[:homotopy|linear][@C]: edge v_I - v_J follows the local homotopy (default) or the straight path. "
-      "With E^S, E^R or blend and no --pin/--locus/--edge-direction, one edge of the source triangle nearest "
-      "the barycentre follows its local homotopy (fixes rotation and scale; listed in metrics.json)");
-  cmd->add_option("--barycentre-locus", o->engine.barycentre,
-                  "linear[@C] | none | x1,y1;x2,y2;...[@C]: the barycentre's path (linear: source to target)")
-      ->capture_default_str();
-  CLI::Option* time_range = cmd->add_option("--time-range", o->time_range,
-                                            "T0:T1, the times of the first and last frame (extrapolation allowed)")
-                                ->capture_default_str();
-  cmd->add_option("--times", o->times,
-                  "T1,T2,...: write exactly these frames, in this order (any finite reals, extrapolation allowed; "
-                  "instead of --frames and --time-range)")
-      ->excludes(frames)
-      ->excludes(time_range);
-  cmd->add_flag("--allow-flipped-target", o->allow_flipped_target,
-                "Accept target triangles flipped against the source");
-  cmd->add_option("--format", o->format,
-                  "Frame files: obj (OUT/frame_0000.obj ...) or npy (OUT/frames.npy, all frames as one float64 array "
-                  "of shape (frames, vertices, 2): numpy.load; for large meshes)")
-      ->check(CLI::IsMember({"obj", "npy"}))
-      ->capture_default_str();
-  cmd->add_flag("!--no-figures", o->figures, "Write only frames and metrics.json (no filmstrip, GIF or viewer)");
-  cmd->add_option("--metrics", o->metrics,
-                  "What metrics.json gives per frame besides t: all, energy (E_t and its parts), quality (flips, "
-                  "area ratios, distortion) or none; with the figures drawn all are computed (the viewer shows "
-                  "them). Each costs about as much as the frame's solve on large meshes")
-      ->check(CLI::IsMember({"all", "energy", "quality", "none"}))
-      ->capture_default_str();
+  add_engine_options(*cmd, *o);
+  add_constraint_options(*cmd, o->request);
+  add_output_options(*cmd, *o);
   cmd->callback([o] { run(*o); });
 }
 

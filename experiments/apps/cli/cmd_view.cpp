@@ -53,7 +53,7 @@ plots::ViewerRun read_run(const fs::path& folder) {
     plots::ViewerRun run{
         folder.filename().string() + ": " + fs::path(document["source"].get<std::string>()).filename().string() +
             " -> " + fs::path(document["target"].get<std::string>()).filename().string() + " (" +
-            options.at("local").get<std::string>() + ", E^" + options.at("energy").get<std::string>() + ")",
+            options.at("homotopy").get<std::string>() + ", E^" + options.at("energy").get<std::string>() + ")",
         pair.source,
         {},
         {},

@@ -87,16 +87,16 @@ ExactQuadratic assemble(const RationalMeshPair& mesh, global::Energy energy, con
     const global::LinearPartOperator<Rational> D = global::linear_part_operator(reference);
     global::TriangleQuadratic<Rational> q;
     switch (energy) {
-      case global::Energy::frobenius:
+      case global::Energy::F:
         q = global::frobenius_quadratic(D, Ai);
         break;
-      case global::Energy::similarity:
+      case global::Energy::R:
         q = global::similarity_quadratic(D, Ai);
         break;
       case global::Energy::blend:
         q = global::blend_quadratic(D, Ai, w);
         break;
-      case global::Energy::procrustes:
+      case global::Energy::S:
         q = global::procrustes_quadratic(reference, Ai);
         break;
     }

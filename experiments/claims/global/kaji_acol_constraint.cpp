@@ -37,7 +37,7 @@ using global_exact::VecQ;
 
 /// v(1) minimising Σ E^F(A_i, B_i) + ‖r − v_1‖², exactly.
 VecQ frame_at_one(const global_exact::RationalMeshPair& mesh, const Eigen::Matrix<Rational, 2, 1>& r) {
-  auto form = global_exact::assemble(mesh, global::Energy::frobenius, 1, mesh.linear_parts());
+  auto form = global_exact::assemble(mesh, global::Energy::F, 1, mesh.linear_parts());
   form.G(0, 0) += 1, form.G(1, 1) += 1;
   form.u[0] -= 2 * r[0], form.u[1] -= 2 * r[1];
   return global_exact::solve(form.G, local::scaled(Rational(-1, 2), form.u));

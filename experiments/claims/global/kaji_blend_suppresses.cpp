@@ -61,7 +61,7 @@ Outcome check(const ClaimContext& ctx) {
     InterpolationOptions options = options_for(Energy::blend, setup.constraints);
     options.blend_weights = Eigen::VectorXd::Zero(P.triangle_count());
     for (const Eigen::Index i : head) options.blend_weights[i] = w;
-    if (w == 0) options.energy = Energy::similarity;  // the blend with every w_i = 0 is E^R
+    if (w == 0) options.energy = Energy::R;  // the blend with every w_i = 0 is E^R
     const global::Interpolation interpolation(P, setup.pair.target, options);
     const Animation a = animate("w = " + std::to_string(w).substr(0, 3) + " on the head", P, interpolation, frames);
     double rotation = 0, scale = 0;

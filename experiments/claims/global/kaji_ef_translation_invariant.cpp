@@ -54,7 +54,7 @@ Outcome check(const ClaimContext& ctx) {
       M = local::scaled(Rational(1, 2), sum);
     }
     for (const auto& maps : {A, half}) {
-      const auto form = global_exact::assemble(mesh, Energy::frobenius, 1, maps);
+      const auto form = global_exact::assemble(mesh, Energy::F, 1, maps);
       VecQ tx = VecQ::Zero(2 * n), ty = VecQ::Zero(2 * n);
       for (Eigen::Index v = 0; v < n; ++v) tx[2 * v] = 1, ty[2 * v + 1] = 1;
       const VecQ Gtx = form.G.lazyProduct(tx), Gty = form.G.lazyProduct(ty);

@@ -35,11 +35,10 @@ Outcome check(const ClaimContext& ctx) {
   const LociSetup setup = swung_loci();
   const int frames = ctx.pick(11, 41);
   const Mesh& P = setup.pair.source;
-  const Animation F = animate(
-      "E^F", P, global::Interpolation(P, setup.pair.target, options_for(Energy::frobenius, setup.constraints)), frames);
+  const Animation F =
+      animate("E^F", P, global::Interpolation(P, setup.pair.target, options_for(Energy::F, setup.constraints)), frames);
   const Animation R =
-      animate("E^R", P, global::Interpolation(P, setup.pair.target, options_for(Energy::similarity, setup.constraints)),
-              frames);
+      animate("E^R", P, global::Interpolation(P, setup.pair.target, options_for(Energy::R, setup.constraints)), frames);
   Outcome out;
   const bool reproduced = fails(F) && !fails(R);
   out.verdict = reproduced ? Verdict::confirmed : Verdict::refuted;

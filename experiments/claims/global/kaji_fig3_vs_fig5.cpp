@@ -48,9 +48,9 @@ Outcome check(const ClaimContext& ctx) {
     options.rotation_branch = branch;
     return animate(label, P, global::Interpolation(P, pair.target, options), frames);
   };
-  const Animation F = run("E^F, principal angles", Energy::frobenius, global::RotationBranch::principal);
-  const Animation R = run("E^R, principal angles", Energy::similarity, global::RotationBranch::principal);
-  const Animation F_consistent = run("E^F, consistent branch", Energy::frobenius, global::RotationBranch::consistent);
+  const Animation F = run("E^F, principal angles", Energy::F, global::RotationBranch::principal);
+  const Animation R = run("E^R, principal angles", Energy::R, global::RotationBranch::principal);
+  const Animation F_consistent = run("E^F, consistent branch", Energy::F, global::RotationBranch::consistent);
   Outcome out;
   const bool reproduced = fails(F) && !fails(R);
   out.verdict = reproduced ? Verdict::confirmed : Verdict::refuted;

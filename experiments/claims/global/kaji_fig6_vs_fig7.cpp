@@ -91,7 +91,7 @@ WeightingTrial weighting_trial(const shapes::MeshPairShapes& pair, int frames, c
     if (std::abs(P.doubled_signed_area(i)) >= largest_area / 4) large.push_back(i);
     if (std::abs(P.doubled_signed_area(i)) <= 4 * smallest_area) small.push_back(i);
   }
-  InterpolationOptions options = options_for(Energy::similarity, worm_base_pins(P));
+  InterpolationOptions options = options_for(Energy::R, worm_base_pins(P));
   for (const auto& [k, middle] : pushed) {
     Eigen::Matrix2Xd points(2, 3);
     points << P.vertices.col(k), middle, pair.target.vertices.col(k);

@@ -37,7 +37,7 @@ Outcome check(const ClaimContext& ctx) {
   const int frames = ctx.pick(11, 41);
   Outcome out;
   nlohmann::json tried = nlohmann::json::array();
-  for (const Energy energy : {Energy::similarity, Energy::frobenius}) {
+  for (const Energy energy : {Energy::R, Energy::F}) {
     const global::Interpolation interpolation(P, setup.pair.target, options_for(energy, setup.constraints));
     const Animation a = animate("E^" + global::to_string(energy), P, interpolation, frames);
     double local_min_det = std::numeric_limits<double>::infinity();  // det A^E_i(t) > 0 (Kaji §3)

@@ -65,7 +65,7 @@ Outcome check(const ClaimContext& ctx) {
   nlohmann::json cases = nlohmann::json::array();
   double worst_symmetric = 0, smallest_plain = std::numeric_limits<double>::infinity();
   for (const auto& [name, pair] : shapes_tried)
-    for (const Energy energy : {Energy::frobenius, Energy::similarity, Energy::blend})
+    for (const Energy energy : {Energy::F, Energy::R, Energy::blend})
       for (const global::LocalHomotopy homotopy : {global::LocalHomotopy::exp, global::LocalHomotopy::polar}) {
         const double symmetric = reversal_gap(pair, energy, homotopy, true, frames);
         const double plain = reversal_gap(pair, energy, homotopy, false, frames);
