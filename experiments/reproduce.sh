@@ -1,17 +1,30 @@
 #!/usr/bin/env bash
 # The main job: set up, build the benchmarks, check that every installed header compiles on its own and that
-# the 1M-triangle spiral interpolates with every energy, run the benchmarks, check the lemmas' Coq proofs,
-# decide the proofs' sentences whose stored answers are missing or stale, decide every claim at full size, draw
-# the figures, and write reports/claims.json and reports/REPORT.md. Outputs are replaced only when a step succeeds.
+# the lemmas' Coq proofs pass Coq's kernel, decide the proofs' sentences whose stored answers are missing or
+# stale, run the speed benchmarks, decide every claim at full size, draw the figures, and write
+# reports/claims.json, reports/REPORT.md and reports/claims/. Outputs are replaced only when a step succeeds.
+#   --scale     also run the engine's scale study: meshes up to 1M triangles (bench_scale), the CLI against the
+#               engine at that size (bench_cli_scale) and the 1M-triangle spiral with every energy through the
+#               CLI (ctest -L scale). Without it the report shows the latest committed scale run, with its date
+#               and machine.
 #   --reprove   re-decide every committed sentence first (QEPCAD B, Z3) and fail if any answer differs from
 #               the committed one (reports/proofs/); without it only missing or stale answers are decided.
 # Other arguments go to `affinterp claims` (e.g. --only ID, --seed N).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 reprove=0
+scale=0
 args=()
 for a in "$@"; do
-  if [ "$a" = --reprove ]; then reprove=1; else args+=("$a"); fi
+  case "$a" in
+    --reprove) reprove=1 ;;
+    --scale) scale=1 ;;
+    -h | --help)
+      sed -n '2,12p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+      exit 0
+      ;;
+    *) args+=("$a") ;;
+  esac
 done
 bash "$root/experiments/setup.sh"
 cli="$root/build/bin/affinterp"
@@ -21,9 +34,10 @@ cmake --build "$root/build" --target benchmarks -j "$(nproc)"
 # The one check too slow for CI's 15 minutes: every installed header compiled on its own (checks/README.md).
 echo "==> compiling every installed header on its own (ctest -L headers)"
 ctest --test-dir "$root/build" --output-on-failure -L headers
-# Issue 19's scale case: the 1M-triangle spiral with every energy through the CLI.
-echo "==> the 1M-triangle spiral with every energy (ctest -L scale)"
-ctest --test-dir "$root/build" --output-on-failure -L scale
+if ((scale)); then
+  echo "==> the 1M-triangle spiral with every energy (ctest -L scale)"
+  ctest --test-dir "$root/build" --output-on-failure -L scale
+fi
 
 echo "==> the lemmas' Coq proofs checked by Coq's kernel (ctest -R proofs.coq)"
 ctest --test-dir "$root/build" --output-on-failure -R proofs.coq
@@ -39,9 +53,10 @@ fi
 bench_dir="$root/reports/bench"
 mkdir -p "$bench_dir"
 # The speed programs run as whole processes in interleaved order (A B C A B C ...), AFFINTERP_BENCH_PROCESSES
-# times each: slow phases of a shared machine then fall between processes, which the bootstrap intervals cover
+# times each (one by default: each run joins the history, whose runs on one machine are pooled): slow phases of
+# a shared machine then fall between processes, which the bootstrap intervals cover
 # (experiments/bench/bootstrap.hpp), instead of tilting a verdict. Their processes are merged into one file each.
-processes=${AFFINTERP_BENCH_PROCESSES:-2}
+processes=${AFFINTERP_BENCH_PROCESSES:-1}
 speed_programs=(bench_exp3 bench_app3 bench_interp)
 staging="$bench_dir/.processes"
 rm -rf "$staging"
@@ -59,13 +74,13 @@ for name in "${speed_programs[@]}"; do
   "$root/build/bin/affinterp" bench merge --out "$bench_dir/$name.json" "${outputs[@]}"
 done
 rm -rf "$staging"
-# The other programs once each.
-for bench in "$root"/build/bin/bench_*; do
-  [ -x "$bench" ] || continue
-  name=$(basename "$bench")
-  [[ " ${speed_programs[*]} " == *" $name "* ]] && continue
+# The other programs once each; the scale study's only with --scale.
+other_programs=(bench_figures)
+((scale)) && other_programs+=(bench_scale bench_cli_scale)
+for name in "${other_programs[@]}"; do
+  [ -x "$root/build/bin/$name" ] || continue
   echo "==> benchmark $name"
-  "$bench" --benchmark_out="$bench_dir/.$name.json.tmp" --benchmark_out_format=json
+  "$root/build/bin/$name" --benchmark_out="$bench_dir/.$name.json.tmp" --benchmark_out_format=json
   mv "$bench_dir/.$name.json.tmp" "$bench_dir/$name.json"
 done
 # This run joins the history the speed verdicts are decided over (the entries of earlier runs are kept).
