@@ -11,7 +11,8 @@
 
 namespace affinterp::plots {
 
-/// One run's figure: its label on the axis (e.g. "<date> Xeon", its run's date and machine), value and interval (none: a point only).
+/// One run's figure: its label on the axis (its date and machine, e.g. "<date> Xeon"), value and interval (none: a
+/// point only).
 struct RunValue {
   std::string label;
   double value = 0;

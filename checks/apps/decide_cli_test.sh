@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `affinterp decide` end to end with QEPCAD B and Z3 (label `proof`): the --json object of issue 10, a
+# `affinterp decide` end to end with QEPCAD B and Z3 (label `proof`): the --json object (verdict, counterexample, seconds), a
 # counterexample that is exact and small, and the text form.
 # Usage: decide_cli_test.sh path/to/affinterp
 set -u

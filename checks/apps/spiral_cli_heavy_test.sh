@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Issue 19's scale case through the CLI: `affinterp shapes strip-spiral --quads 2000x250` (1,000,000 triangles,
+# The engine's scale case through the CLI: `affinterp shapes strip-spiral --quads 2000x250` (1,000,000 triangles,
 # a strip 18.8 × 2 rolled 1.5 turns) interpolates with every energy, `affinterp interpolate`'s other options
 # left at their defaults: exit 0, frames.npy of shape (2, 502251, 2) and its full size, and in metrics.json a
-# finite E_t for each frame. Tier `heavy` (5–10 s per energy on 2 cores, up to 2 GB; 30 s in all).
+# finite E_t for each frame. Tier `heavy` (seconds per energy on 2 cores, up to 2 GB;
+# under a minute in all).
 # Usage: spiral_cli_heavy_test.sh path/to/affinterp
 set -u
 affinterp=$1

@@ -46,7 +46,7 @@ expect_run "a peer's failure is not an overflow" 1 "" \
   "^affinterp: line 1: thesis-improved-sd gives a non-finite result although exp S is finite \\(largest eigenvalue 3e-160," \
   "1e-160 2e-160 0 2e-160 1e-160 0 0 0 3e-160\n" exp3 --algorithm thesis-improved-sd
 
-# The whole double range (issue 11): subnormal entries (exp S = I + S, rounded), 10^±300 beside each
+# The whole double range: subnormal entries (exp S = I + S, rounded), 10^±300 beside each
 # other, entries whose squares overflow, a spectrum just below exp's overflow.
 out=$(printf '1e-310 1e-310 0  1e-310 1e-310 0  0 0 1e-310\n' | "$affinterp" exp3)
 awk -v l="$out" 'BEGIN { n = split(l, x, " "); d = x[2] * 1e300 - 1e-10; exit !(n == 9 && x[1] == 1 && x[5] == 1 &&

@@ -1,5 +1,5 @@
-// The proofs attached to the algebraic claims of Kaji's E^R, thesis §2.3 and chapter 3 (issue 10) and to the local,
-// spectral-decomposition and E^F frame claims (issue 17): every confirmed one is proved for all reals, every refuted or
+// The proofs attached to the algebraic claims of Kaji's E^R, thesis §2.3 and chapter 3 and to the local,
+// spectral-decomposition and E^F frame claims: every confirmed one is proved for all reals, every refuted or
 // corrected one keeps its exact counterexample with the proof attached.
 #include "experiments/claims/registry.hpp"
 

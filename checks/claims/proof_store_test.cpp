@@ -1,4 +1,4 @@
-// Proofs as data (issue 18): every decider run the claims' proofs need has a stored transcript answering the
+// Proofs as data: every decider run the claims' proofs need has a stored transcript answering the
 // sentence's current text, so that the checks, which only read answers, decide what the committed report says.
 // A sentence edited without `affinterp prove` fails here, naming it; no decider runs.
 #include "experiments/claims/runner.hpp"

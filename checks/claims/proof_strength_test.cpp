@@ -1,4 +1,4 @@
-// The strength of a proved verdict is computed from its formulations' runs (issue 17): one complete formulation
+// The strength of a proved verdict is computed from its formulations' runs: one complete formulation
 // answered by two deciders and citing nothing makes the claim `proved`; otherwise the lemma chain's label holds.
 #include "experiments/claims/proof_strength.hpp"
 

@@ -5,8 +5,8 @@
 # project's own copies are tuned to this CPU, the installed ones must not be), then builds and runs the
 # outside project beside this script against the install; (b) builds and runs it against the build tree
 # itself (its export()). With `headers` it instead compiles every installed header on its own against the install
-# (the `headers` tier: 72 headers, each parsing Eigen or Boost.Multiprecision anew, 4-9 CPU-minutes on a 2-core
-# AVX2 machine, which CI's 15 minutes cannot hold; the main job runs it).
+# (the `headers` tier: every installed header, each parsing Eigen or Boost.Multiprecision anew, minutes of CPU
+# that CI's 15 minutes cannot hold; the main job runs it).
 # Usage: run.sh SOURCE_DIR BUILD_DIR WORK_DIR [headers]
 set -euo pipefail
 src=$1

@@ -1,7 +1,7 @@
-// Issue 19's spiral at full size: a strip of 2000 × 250 quads (1,000,000 triangles, 18.8 × 2) rolled 1.5
+// The engine's scale case at full size: a strip of 2000 × 250 quads (1,000,000 triangles, 18.8 × 2) rolled 1.5
 // turns, which E^R refused before the barycentre was eliminated exactly (sparse_minimiser.hpp): every energy
 // interpolates it with the options of `affinterp interpolate`, its barycentre on the straight locus.
-// Label heavy: 3–6 s per energy on 2 cores, 1–2 GB (`affinterp interpolate` on the same spiral: cli.spiral_1m).
+// Label heavy: seconds per energy on 2 cores, 1–2 GB (`affinterp interpolate` on the same spiral: cli.spiral_1m).
 #include "checks/global/strip.hpp"
 #include "theory/global/interpolation.hpp"
 

@@ -1,4 +1,4 @@
-// The engine at scale (issue 19): the barycentre and the default gauge handled exactly, so that a strip
+// The engine at scale: the barycentre and the default gauge handled exactly, so that a strip
 // rolled into a spiral interpolates at every size and in any units; the batch vertices_at(times) equal to
 // the frames one by one; and the two sparse back-ends (sparse_factor.hpp) giving the same solutions.
 #include "checks/global/strip.hpp"
@@ -42,7 +42,7 @@ TEST(Scale, SpiralMatchesTheDenseMinimiserWithEveryEnergy) {
 // E^F, E^R and the blend with area weights have the units of the constraints (length²), so the minimiser is
 // the same shape in any units. E^S does not: Σ_k ‖s R_δ A p_k − B p_k‖² is in length² per triangle, times the
 // area, against the gauge edge's length²; in micrometres the edge outweighs it by 10¹² and G is numerically
-// singular (refused). Left out here, reported as open (issue 19).
+// singular (refused). Left out here: an open limitation of E^S under the default gauge.
 TEST(Scale, SpiralInAnyUnitsIsTheSameShapeScaled) {
   const Spiral unit = spiral(60, 6);
   for (const Energy energy : {Energy::F, Energy::R, Energy::blend}) {

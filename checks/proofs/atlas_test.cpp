@@ -1,5 +1,5 @@
 // The atlas conditions against the suite's own exact deciders (theory/local/goodness.hpp) at random rational
-// points: the encoder and the exact evaluators agree (issue 10, item 6).
+// points: the encoder and the exact evaluators agree.
 #include "experiments/proofs/atlas.hpp"
 #include "theory/local/goodness.hpp"
 

@@ -1,5 +1,5 @@
 // Reading QEPCAD B's, Z3's and cvc5's outputs, on outputs they printed, without running them. A transcript with
-// an error, a warning or a failure anywhere answers nothing (issue 17).
+// an error, a warning or a failure anywhere answers nothing, whatever formula it printed.
 #include "experiments/proofs/decider_output.hpp"
 
 #include <gtest/gtest.h>
@@ -139,7 +139,7 @@ TEST(ParseSmt, AnErrorOrAResourceMessageAnywhereAnswersNothing) {
   EXPECT_EQ(parse_smt("sat\n((define-fun x () Real (/ (- 7) 4)))\n", "cvc5").result, SetResult::non_empty);
 }
 
-// The messages QEPCAD B printed in the transcripts of issue 17 (thesis.thm-2.2.1's level D and L sentences,
+// The messages QEPCAD B printed in transcripts of the second formulations (thesis.thm-2.2.1's level D and L sentences,
 // thesis.thm-2.2.3's beta0.cond-not-prop.D): each with a formula after it, and each an answer of nothing.
 TEST(ParseQepcad, AnErrorOrAWarningAnywhereAnswersNothing) {
   const std::string answer = "\nAn equivalent quantifier-free formula:\n\nFALSE\n\n";

@@ -99,7 +99,8 @@ std::vector<Identity> lemma_identities() {
   list.push_back({"L5.norm-left-rotation", "||R w||^2 = (co^2 + si^2)||w||^2", norm_squared(R.mul(v)),
                   rotation_gram() * norm_squared(v)});
 
-  // L6: the squared norm of a blend is homogeneous of degree 2 in v (the directions of issue 17's formulations).
+  // L6: the squared norm of a blend is homogeneous of degree 2 in v (the directions of the second formulations,
+  // which do without Dines' theorem).
   list.push_back({"L6.norm-homogeneous", "||((1-t)I + tB)(l v)||^2 = l^2 ||((1-t)I + tB)v||^2",
                   norm_squared(blend(Bm).mul(v.mul_scalar(sym("l")))),
                   GiNaC::pow(sym("l"), 2) * norm_squared(blend(Bm).mul(v))});

@@ -1,4 +1,4 @@
-// Structural sentences (issue 17): empty for propositional reasons alone.
+// Structural sentences: empty for propositional reasons alone.
 #include "experiments/proofs/structural.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Proofs as data (issue 18): a stored transcript keys its answer to the input it answered, and every committed
+// Proofs as data: a stored transcript keys its answer to the input it answered, and every committed
 // transcript under reports/proofs/ answers the input file beside it.
 #include "experiments/proofs/transcript.hpp"
 #include "experiments/proofs/decide_sentence.hpp"

@@ -161,8 +161,8 @@ void ldl_solve_in_place(const LdlColumns<Scalar>& L, Block& Y, std::size_t threa
 }
 
 /// X ← (P L D Lᴴ Pᵀ)⁻¹ X, perm[k] the unknown of pivot k (null: none): X's rows gathered into pivot order,
-/// solved as ldl_solve_in_place, scattered back. Row by row, where Eigen's product by a permutation took a visible share
-/// of an E^F frame.
+/// solved as ldl_solve_in_place, scattered back. Row by row, where Eigen's product by a permutation took a visible
+/// share of an E^F frame.
 template <class Scalar, class Block>
 void ldl_solve_permuted(const LdlColumns<Scalar>& L, const int* perm, Block& X, std::size_t threads) {
   if (!perm) return ldl_solve_in_place(L, X, threads);

@@ -70,7 +70,8 @@ inline constexpr Eigen::Index cholmod_from_unknowns = std::is_same_v<Scalar, dou
 /// Whether this build has the CHOLMOD back-end.
 bool has_cholmod();
 
-/// The back-end for `unknowns` unknowns: CHOLMOD from cholmod_from_unknowns<Scalar> on when built in, else the simplicial one.
+/// The back-end for `unknowns` unknowns: CHOLMOD from cholmod_from_unknowns<Scalar> on when built in, else the
+/// simplicial one.
 template <class Scalar>
 std::unique_ptr<SparseFactor<Scalar>> make_sparse_factor(Eigen::Index unknowns);
 /// The named back-end (for benchmarks comparing them); std::invalid_argument if it is not built in.
