@@ -1,5 +1,5 @@
 #pragma once
-// The goodness atlas (issue 10, item 4): for each homotopy and each notion of "good" (thesis Defs 2.2.1,
+// The goodness atlas: for each homotopy and each notion of "good" (thesis Defs 2.2.1,
 // 2.2.2), the parameters, their domain, and the exact region where the homotopy is good, as a condition in
 // the `decide` grammar, proved equivalent to the definition (experiments/claims/atlas/).
 //

@@ -1,5 +1,5 @@
 #pragma once
-// The sentences that prove a condition exact for a property (issue 10): a condition C is where a property P
+// The sentences that prove a condition exact for a property: a condition C is where a property P
 // holds on a domain exactly when both sets
 //   cond-not-prop  {x in the domain : C(x) ∧ ¬P(x)}
 //   prop-not-cond  {x in the domain : ¬C(x) ∧ P(x)}

@@ -1,5 +1,5 @@
 #pragma once
-// `affinterp decide` (issue 10, item 5): is a condition the exact region where a homotopy is good? The
+// `affinterp decide`: is a condition the exact region where a homotopy is good? The
 // property is replaced by the atlas condition proved equivalent to it (experiments/claims/atlas), so both
 // sentences, "condition ∧ ¬property" and "¬condition ∧ property" over the domain, are quantifier-free
 // existential problems that QEPCAD B and Z3 decide within seconds (wall times: reports/claims.json).

@@ -2,7 +2,7 @@
 // Deciding one first-order sentence with two independent deciders, QEPCAD B (cylindrical algebraic
 // decomposition) and Z3 (nlsat). The input files and the deciders' transcripts are written side by side so
 // that anyone can rerun the sentence with the tool alone. A check reads the answers from stored transcripts
-// (proofs as data, issue 18) and never starts a decider; `affinterp decide` runs them.
+// (proofs as data) and never starts a decider; `affinterp decide` runs them.
 #include "experiments/proofs/decider.hpp"
 #include "experiments/proofs/proof.hpp"
 #include "experiments/proofs/proof_plan.hpp"

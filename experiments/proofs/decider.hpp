@@ -24,7 +24,7 @@ struct DeciderLimits {
   std::size_t address_space_bytes = std::size_t{1536} << 20;  ///< RLIMIT_AS of each decider
   long qepcad_cells = 100'000'000;                            ///< QEPCAD's +N (garbage-collected space)
   long z3_megabytes = 1024;                                   ///< z3 -memory:
-  /// A formulation tried for the record (Proof::attempts, issue 17), not part of a proof: `affinterp prove`
+  /// A formulation tried for the record (Proof::attempts), not part of a proof: `affinterp prove`
   /// decides it when its transcript is missing or stale, but `--all` does not re-decide it.
   bool attempt = false;
 };

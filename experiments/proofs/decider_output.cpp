@@ -192,7 +192,7 @@ std::string_view to_string(SetResult r) {
 DeciderAnswer parse_qepcad(const std::string& output, const std::vector<std::string>& variables) {
   DeciderAnswer answer;
   const std::vector<std::string> lines = lines_of(output);
-  // A run that printed an error, a warning or a failure answered nothing, whatever formula it printed (issue 17):
+  // A run that printed an error, a warning or a failure answered nothing, whatever formula it printed:
   // "Error! Delineating polynomial should be added over cell(…)!", the McCallum projection's "may not be valid"
   // warning (the projection is complete only for well-oriented input: Collins and Hong, J. Symb. Comput. 12,
   // 1991; Brown, QEPCAD B user manual), "Failure occurred in …", "Prime list exhausted", "Too few cells
@@ -261,7 +261,7 @@ DeciderAnswer parse_smt(const std::string& output, std::string_view tool) {
     answer.reason = first.empty() ? name + ": no answer" : name + ": " + first;
     return answer;
   }
-  // An error, a warning or a resource message anywhere: the run answered nothing (issue 17).
+  // An error, a warning or a resource message anywhere: the run answered nothing.
   for (const std::string& line : lines)
     for (const char* flag : {"(error", "warning", "WARNING", "unknown", "timeout", "resource", "interrupted"})
       if (line.find(flag) != std::string::npos) {

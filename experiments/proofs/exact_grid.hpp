@@ -1,5 +1,5 @@
 #pragma once
-// The second checker of a polynomial or rational identity lhs = rhs (issue 10), sharing no arithmetic with
+// The second checker of a polynomial or rational identity lhs = rhs, sharing no arithmetic with
 // GiNaC's normal(): both sides are read as the expression trees the suite's algebra built (sums, products,
 // integer powers, rational numbers, symbols; a function such as exp(λ) is an independent variable), each
 // turned into a fraction n/d without cancelling anything, and the numerator N = n_l d_r − n_r d_l of the

@@ -1,5 +1,5 @@
 #pragma once
-// Two formulations of a claim (issue 17): besides the lemma chain, a formulation straight from the paper's
+// Two formulations of a claim: besides the lemma chain, a formulation straight from the paper's
 // definition (Def 2.2.1: for all 0 <= s <= t <= 1; Def 2.2.2: for all t in [0, 1] and all unit v) with as few
 // lemmas as a decider allows, each lemma it does use a sentence of its own. A formulation is a complete proof by
 // itself (Proof::formulations); what was tried and not answered is kept for the record (Proof::attempts): the

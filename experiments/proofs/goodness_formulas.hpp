@@ -1,5 +1,5 @@
 #pragma once
-// Thesis Defs 2.2.1 (good for area) and 2.2.2 (good for norm) as first-order formulas over the reals (issue 10):
+// Thesis Defs 2.2.1 (good for area) and 2.2.2 (good for norm) as first-order formulas over the reals:
 // the properties in the sentences that prove the local claims and the goodness atlas for all reals
 // (condition_sentences.hpp).
 // Every polynomial is built from the homotopy itself, A(t) = U(t)((1−t)I + tB)V(t) with rotations U, V that

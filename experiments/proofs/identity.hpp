@@ -1,5 +1,5 @@
 #pragma once
-// Polynomial and rational identities as parts of a proof (issue 10): lhs = rhs for all values of the symbols
+// Polynomial and rational identities as parts of a proof: lhs = rhs for all values of the symbols
 // where both sides are defined, decided by two independent checkers,
 //   ginac       GiNaC's normal() of lhs − rhs is 0 (polynomial arithmetic and gcd cancellation), and
 //   exact-grid  exact integer evaluation of the unexpanded sides on a grid large enough for their degree

@@ -1,7 +1,7 @@
 #pragma once
 // The lemmas of reports/proofs/LEMMAS.md that are first-order sentences themselves, each empty iff the lemma
 // holds: a proof that uses one decides it as its own sentence (the local claims, the atlas, and the literal
-// formulations of issue 17). The quadratic lemmas are stated for f = 1 + c1 t + c2 t²; their sentences contain
+// formulations). The quadratic lemmas are stated for f = 1 + c1 t + c2 t²; their sentences contain
 // no constant term (only differences f(s) − f(t) and the derivative occur), so each is the lemma for every
 // quadratic c0 + c1 t + c2 t².
 #include "experiments/proofs/decide_sentence.hpp"

@@ -1,8 +1,8 @@
 #pragma once
-// The second formulations of issue 17 for the homotopies A(t) = U(t)((1−t)I + tB)V(t) whose rotations leave det
-// and ‖·‖ alone (Lemma L5): a condition against Def 2.2.1 or 2.2.2 taken as nearly as written as a decider
-// answers it, each lemma still used a sentence of the formulation (experiments/proofs/lemma_sentences.hpp).
-// The local claims and the atlas build theirs here.
+// The second formulations, the definitions as written, for the homotopies A(t) = U(t)((1−t)I + tB)V(t) whose
+// rotations leave det and ‖·‖ alone (Lemma L5): a condition against Def 2.2.1 or 2.2.2 taken as nearly as
+// written as a decider answers it, each lemma still used a sentence of the formulation
+// (experiments/proofs/lemma_sentences.hpp). The local claims and the atlas build theirs here.
 #include "experiments/proofs/formulation.hpp"
 #include "experiments/proofs/goodness_formulas.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// A proof for all reals as claims.json records it (issue 10, item 3): every first-order sentence with what
+// A proof for all reals as claims.json records it: every first-order sentence with what
 // each decider said of it. The claims' Outcome carries one (experiments/claims/outcome.hpp).
 #include <optional>
 #include <string>
@@ -30,7 +30,7 @@ struct ProofSentence {
   bool structural = false;
 };
 
-/// A formulation tried for the record that no decider answered (issue 17): what was tried, with which tool,
+/// A formulation tried for the record that no decider answered: what was tried, with which tool,
 /// how much CPU time and memory it took and how it ended; or a formulation no decider can be given (tool empty),
 /// with the reason.
 struct Attempt {
@@ -43,7 +43,7 @@ struct Attempt {
   std::string outcome;  ///< "empty" / "non-empty" / the reason there was no answer
 };
 
-/// A verdict decided for all reals (issue 10): the domain, the method (encoding level and the lemmas that
+/// A verdict decided for all reals: the domain, the method (encoding level and the lemmas that
 /// reduce the sentences) and every sentence with both deciders' results.
 struct Proof {
   std::string scope;   ///< the domain, in words
@@ -53,12 +53,11 @@ struct Proof {
   std::vector<ProofSentence> sentences;  ///< every sentence, in the order the method reads them
   /// An external published theorem the method uses as a step, with its full reference; empty: none.
   std::string cites{};
-  /// Further complete formulations of the same claim (issue 17), each a proof by itself: the literal one, straight
+  /// Further complete formulations of the same claim, each a proof by itself: the literal one, straight
   /// from the paper's definition, whose method names the few lemmas it still uses, each a sentence or identity of
   /// it. The claim's strength is the best of this proof's and theirs (claims/proof_strength.hpp).
   std::vector<Proof> formulations{};
-  /// What was tried and not answered (issue 17): the formulations' unanswered runs and the attempts kept for the
-  /// record.
+  /// What was tried and not answered: the formulations' unanswered runs and the attempts kept for the record.
   std::vector<Attempt> attempts{};
 
   /// Every sentence has an agreed result other than "unknown", given by at least two of its runs, and no run

@@ -1,5 +1,5 @@
 #pragma once
-// A proof plan (issue 18): every decider run the claims' proofs need, each with its input text and where its
+// A proof plan: every decider run the claims' proofs need, each with its input text and where its
 // transcript is stored. The checks record it while reading their answers (SentenceFiles::plan); `affinterp
 // prove` decides the runs whose stored transcript is missing or stale (prove_plan).
 #include "experiments/proofs/decider.hpp"

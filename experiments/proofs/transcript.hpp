@@ -1,5 +1,5 @@
 #pragma once
-// Proofs as data (issue 18): a decider's answer to a sentence is its transcript, stored beside the sentence
+// Proofs as data: a decider's answer to a sentence is its transcript, stored beside the sentence
 // file as <sentence>.<tool>.out. A few header lines key it to the input it answered (the SHA-256 of the input
 // file's text, the decider and its version); below them stands what the decider printed, timings removed.
 // A check reads the answer from the transcript and never starts a decider; `affinterp prove` writes them.

@@ -1,7 +1,7 @@
 #pragma once
 // Counterexamples people can check by hand: a decider's sample point moved to small rationals while the
-// exact quantifier-free predicate still holds at it (issue 10: "shrunk to small rationals where the set
-// has one, and re-verified").
+// exact quantifier-free predicate still holds at it: shrunk to small rationals where the set has one, and
+// re-verified.
 #include "theory/logic/polynomial.hpp"
 
 #include <functional>
