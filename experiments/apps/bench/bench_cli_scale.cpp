@@ -1,9 +1,9 @@
-// The CLI as fast as the engine at a million triangles (issue 19): `affinterp interpolate` on the shape pair
+// The CLI as fast as the engine at a million triangles: `affinterp interpolate` on the shape pair
 // strip-spiral at 2000 × 250 quads (1,000,000 triangles, 18.8 × 2 rolled 1.5 turns), with --format npy
 // --no-figures --metrics none, run as a process for 2 frames and for 2 + extra_frames(energy), one after the
 // other in each iteration; a frame through the CLI, writing included, costs the difference over the extra frames
 // (reading the meshes and the set-up cancel). E^F's frames are ten times cheaper than E^R's, so it takes 32
-// extra frames, E^R 8: with 8, E^F's difference (~0.6 s of ~3.5 s runs) moved by a third between two runs. Beside it,
+// extra frames, E^R 8: with 8, E^F's difference (a small part of a run) moved by a third from run to run. Beside it,
 // in the same process, the engine's own frame on the same pair: vertices_at(times) of 8 frames, per frame (the CLI
 // solves its frames in batches too). The report (experiments/claims/engine_cli.hpp) sets the one against the other: the
 // target is at most 1.3 times, judged on the bootstrap interval of the ratio of medians over the repetitions. For E^F,

@@ -1,4 +1,4 @@
-// What the figures cost a user of `affinterp interpolate` (issue 12): the octopus of ../shared (66,527
+// What the figures cost a user of `affinterp interpolate`: the octopus of ../shared (66,527
 // triangles) curled by half a turn (shapes::Curl, θ_end = π), 17 frames, run end to end as a process with
 // its default outputs (OBJ frames, metrics.json, filmstrip PNG + SVG, animated GIF, viewer.html) and with
 // --no-figures. Each iteration runs both, one after the other, so that the load of a shared machine weighs
@@ -6,11 +6,10 @@
 // their ratio (the target: at most 2) and each run's peak resident memory. Without ../shared, the
 // project's generated man meshed to a similar size (65,326 triangles) stands in (the name says which).
 //
-// Measured on 2 shared, loaded cores with the octopus (ratios of wall times; see the commit that added
-// this file): figures drawn in-process (Cairo, giflib) make the default run 1.2× the --no-figures run
-// (filmstrip 0.12 s, 17-frame GIF 0.19 s); one gnuplot session drawing every GIF frame through its
-// `gif animate` terminal (no ImageMagick) took 1.9 s for the filmstrip and 2.8 s for the GIF, about 3.2×;
-// the earlier pngcairo frames joined by ImageMagick's convert 3.8× (convert alone 3.5 s).
+// Why the figures are drawn in-process (Cairo, giflib): that keeps the default run close to the --no-figures
+// run, where one gnuplot session drawing every GIF frame through its `gif animate` terminal, and before it
+// pngcairo frames joined by ImageMagick's convert, made it several times slower (this benchmark measures the
+// ratio; the commit that added this file records the alternatives' figures).
 #include "experiments/apps/bench/bench_context.hpp"
 #include "experiments/apps/bench/cli_process.hpp"
 #include "experiments/inputs/mesh_file.hpp"

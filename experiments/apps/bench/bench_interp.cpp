@@ -3,8 +3,8 @@
 // frame (v(t) for a new t) per energy, on the octopus mesh of ../shared (66,527 triangles) bent by a
 // known curl — or, when ../shared is absent, on the project's generated man meshed by CGAL to a similar
 // size, 65,326 triangles (the benchmark names say which): an unstructured mesh of an organic outline like
-// the octopus, whose E^R frame costs about the same (about 34 ms against 33 ms on the octopus, AMD EPYC),
-// where a structured 543 × 61 grid strip of that size, the earlier stand-in, took 52 ms. The baseline
+// the octopus, whose E^R frame costs about the same as the octopus's, where a
+// structured 543 × 61 grid strip of that size, the earlier stand-in, cost markedly more. The baseline
 // refactorises from scratch every frame (symbolic + numeric, as common public implementations do),
 // measured in the same run; batch_frames/<energy> computes 8 frames at once (vertices_at(times)), and
 // frame_rhs, frame_assembly, frame_factor and frame_solve time the parts of an E^F and an E^R frame.

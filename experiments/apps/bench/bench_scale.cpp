@@ -1,4 +1,4 @@
-// How the global engine's cost grows with the mesh (issues 12 and 19): set-up (local maps, rotation
+// How the global engine's cost grows with the mesh: set-up (local maps, rotation
 // branches, sparsity pattern, symbolic analysis, first factorisation), time per frame for E^F and E^R, and
 // peak memory, on the project's man bent by a circular curl through one radian along its width
 // (bench_interp's stand-in for the octopus): meshed by CGAL with edges up to 0.0137 (65,326 triangles) and

@@ -1,5 +1,5 @@
 // `affinterp bench`: merge the whole-process repetitions of a benchmark program into one file, and record a run of
-// the benchmarks in the history the speed verdicts are decided over (experiments/bench/, issue 21).
+// the benchmarks in the history the speed verdicts are decided over (experiments/bench/).
 #include "experiments/apps/cli/command.hpp"
 #include "experiments/bench/history.hpp"
 #include "experiments/bench/merge_processes.hpp"

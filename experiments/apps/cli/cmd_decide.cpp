@@ -1,5 +1,5 @@
 // `affinterp decide`: is a condition exactly where a homotopy is good for area or norm? Decided for all
-// reals by QEPCAD B and Z3 (issue 10, item 5; experiments/proofs/decide_condition.hpp).
+// reals by QEPCAD B and Z3 (experiments/proofs/decide_condition.hpp).
 #include "experiments/apps/cli/command.hpp"
 #include "experiments/proofs/decide_condition.hpp"
 #include "theory/logic/condition_parser.hpp"

@@ -1,5 +1,5 @@
-// `affinterp prove`: decide the proofs' sentences whose stored answers are missing or stale (proofs as data,
-// issue 18); `--all --check` re-decides every one and fails when an answer differs from the committed one.
+// `affinterp prove`: decide the proofs' sentences whose stored answers are missing or stale (proofs as data);
+// `--all --check` re-decides every one and fails when an answer differs from the committed one.
 #include "experiments/apps/cli/command.hpp"
 #include "experiments/claims/prover.hpp"
 

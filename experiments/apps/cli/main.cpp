@@ -10,9 +10,9 @@ int main(int argc, char** argv) {
   using namespace affinterp::cli;
   affinterp::remove_registered_paths_on_interrupt();  // an interrupted run leaves no staging folder
   // A frame of a 1M-triangle mesh and its right-hand sides are 8 MB arrays. Under glibc's defaults the solver threads
-  // get each one from a fresh mmap whose pages the kernel zeroes, and the writer's free returns it: about 20 ms a
-  // frame at 1M triangles (bench_cli_scale: 84 ms a frame against 64 ms with these two settings). Kept in the heap,
-  // freed arrays are reused; what a run keeps is its peak, as before.
+  // get each one from a fresh mmap whose pages the kernel zeroes, and the writer's free returns it: a sizeable
+  // part of a frame at 1M triangles (bench_cli_scale measures it, with and without these two settings). Kept in the
+  // heap, freed arrays are reused; what a run keeps is its peak, as before.
   mallopt(M_MMAP_THRESHOLD, 256 << 20);
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
   CLI::App app{

@@ -1,5 +1,5 @@
 #pragma once
-// A regular strip of quads and its roll into a spiral: the engine's scale case of issue 19 (2000 × 250 quads,
+// A regular strip of quads and its roll into a spiral: the engine's scale case (2000 × 250 quads,
 // 1,000,000 triangles), at any resolution and in any units. The shape pair "strip-spiral" and the global
 // checks build theirs here; header-only, as grid.hpp, so that the library's own tests need no more than it.
 #include "experiments/inputs/shapes/grid.hpp"
