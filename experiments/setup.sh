@@ -25,8 +25,8 @@ build_packages=(
 # figures' font, clang-format (the layout test), matplotlib (README's Python example), and Coq with Coquelicot
 # and CSDP (psatz's certificates) for the lemmas' kernel-checked proofs (checks/proofs/coq_test.sh).
 # libopenblas0-pthread: CHOLMOD's BLAS and LAPACK at run time, through the libblas.so.3 / liblapack.so.3
-# alternatives (Debian's default is the reference BLAS, 2-3x slower in the supernodal factorisation at 1M
-# triangles). The threaded build, as the engine factorises frames on several threads at once: Debian's serial
+# alternatives (Debian's default is the reference BLAS, several times slower in the supernodal factorisation at
+# 1M triangles). The threaded build, as the engine factorises frames on several threads at once: Debian's serial
 # OpenBLAS is not safe to call concurrently (it returned wrong factors, theory/global/sparse_factor.hpp).
 run_packages=(
   libopenblas0-pthread chromium qepcad z3 cvc5 ginac-tools clang libclang-rt-14-dev clang-format libcgal-demo
