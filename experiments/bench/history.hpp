@@ -1,5 +1,5 @@
 #pragma once
-// The history of benchmark runs (issue 21): one committed entry per run of the benchmarks, under
+// The history of benchmark runs: one committed entry per run of the benchmarks, under
 // reports/bench/history/, each naming its machine (CPU model and flags, cores, compiler and flags, library
 // versions), its date, how many whole processes each program ran in, and every speed figure with its 95%
 // bootstrap interval (speed_figures.hpp). A CPU's name does not identify a machine, so runs are kept side by side,
@@ -17,7 +17,7 @@ namespace affinterp::bench {
 
 /// One run of the benchmark programs on one machine.
 struct RecordedRun {
-  std::string id;          ///< the entry's file stem, e.g. "2026-11-23-intel-xeon-processor"
+  std::string id;          ///< the entry's file stem: its date, then its machine ("<date>-intel-xeon-processor")
   std::string date;        ///< when its first benchmark process started (ISO 8601)
   nlohmann::json machine;  ///< as its benchmark files recorded it: cpu, cpu_flags, cores, compiler, flags, ...
   std::string note;        ///< what the recorder said about the run (e.g. a shared, loaded machine)
