@@ -1,5 +1,5 @@
 #pragma once
-// A measured speed figure with its uncertainty (issue 11): the figure (a ratio of medians, or one median) from the
+// A measured speed figure with its uncertainty: the figure (a ratio of medians, or one median) from the
 // repetitions of Google Benchmark runs, and its 95% bootstrap interval over repetitions and whole processes
 // (bootstrap.hpp). experiments/claims/speed_verdict.hpp decides claims from it.
 #include "experiments/bench/bench_results.hpp"
