@@ -1,5 +1,5 @@
 #pragma once
-// One benchmark file from several whole processes of the same benchmark program (issue 21): run in interleaved
+// One benchmark file from several whole processes of the same benchmark program: run in interleaved
 // order with the other programs (A B A B ...), so that slow phases of a shared machine fall into the spread
 // between processes, which the bootstrap then covers (bootstrap.hpp), instead of into one run's verdict.
 #include <nlohmann/json.hpp>
