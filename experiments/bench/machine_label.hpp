@@ -1,7 +1,7 @@
 #pragma once
 // The machine a benchmark ran on, named so that two machines a table mixes up can be told apart: virtual
-// machines often report a bare "AMD EPYC" for Zen 3 (AVX2) and Zen 4 (AVX-512) alike, whose speeds differ by
-// up to 2× on the same binary, so the name carries the widest vector extension among the CPU's flags.
+// machines often report a bare "AMD EPYC" for Zen 3 (AVX2) and Zen 4 (AVX-512) alike, whose speeds differ
+// markedly on the same binary, so the name carries the widest vector extension among the CPU's flags.
 #include <nlohmann/json.hpp>
 
 #include <string>
