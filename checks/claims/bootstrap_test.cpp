@@ -103,6 +103,62 @@ TEST(Bootstrap, ProcessesThatDisagreeWidenTheInterval) {
   EXPECT_THROW(ratio_of_medians_ci95({slow_a, slow_b}, {fast_a}, 5), std::invalid_argument);
 }
 
+/// Ten repetitions spread evenly over value · (1 ± spread).
+std::vector<double> repetitions(double value, double spread) {
+  std::vector<double> x(10);
+  for (int i = 0; i < 10; ++i) x[i] = value * (1 + spread * (2.0 * i / 9 - 1));
+  return x;
+}
+
+const Statistic kRatio = [](const auto& s) { return median(s[0]) / median(s[1]); };
+
+/// One run of two processes timing `slow` and `fast` (ratio slow / fast), spread ±spread.
+RunSamples run(double slow, double fast, double spread = 0.01) {
+  return {{repetitions(slow, spread), repetitions(slow, spread)},
+          {repetitions(fast, spread), repetitions(fast, spread)}};
+}
+
+TEST(HierarchicalBootstrap, OneRunIsTheRunsOwnIntervalDrawForDraw) {
+  const RunSamples one = run(350, 100, 0.05);
+  const Interval alone = bootstrap_interval(one, kRatio, 11), nested = hierarchical_interval({one}, kRatio, 11);
+  EXPECT_EQ(alone.lo, nested.lo);
+  EXPECT_EQ(alone.hi, nested.hi);
+}
+
+TEST(HierarchicalBootstrap, IsDeterministicForASeed) {
+  const std::vector<RunSamples> runs = {run(350, 100), run(360, 100), run(340, 100, 0.05)};
+  const Interval a = hierarchical_interval(runs, kRatio, 42), b = hierarchical_interval(runs, kRatio, 42);
+  EXPECT_EQ(a.lo, b.lo);
+  EXPECT_EQ(a.hi, b.hi);
+  const Interval c = hierarchical_interval(runs, kRatio, 43);
+  EXPECT_TRUE(a.lo != c.lo || a.hi != c.hi);  // another seed, another resampling
+}
+
+TEST(HierarchicalBootstrap, AWildRunWidensTheInterval) {
+  // Five runs that agree on 3.5 (each tight), then the same five with a sixth at 5.0: were the runs pooled
+  // as one sample, one run in six would barely move the median; drawn as runs, resamples with none, one or
+  // several copies of it spread the statistic, and the interval widens towards 5.
+  std::vector<RunSamples> runs = {run(350, 100), run(348, 100), run(352, 100), run(351, 100), run(349, 100)};
+  const Interval steady = hierarchical_interval(runs, kRatio, 7);
+  runs.push_back(run(500, 100));
+  const Interval wild = hierarchical_interval(runs, kRatio, 7);
+  EXPECT_LT(steady.hi - steady.lo, 0.05);
+  EXPECT_GT(wild.hi - wild.lo, 3 * (steady.hi - steady.lo));
+  EXPECT_GT(wild.hi, 3.6);
+  // Pooling every repetition into one run and one process (no run level) gives a narrower interval.
+  RunSamples flat(2, ByProcess(1));
+  for (const RunSamples& r : runs)
+    for (std::size_t s = 0; s < 2; ++s)
+      for (const auto& process : r[s]) flat[s][0].insert(flat[s][0].end(), process.begin(), process.end());
+  const Interval unnested = bootstrap_interval(flat, kRatio, 7);
+  EXPECT_GT(wild.hi - wild.lo, unnested.hi - unnested.lo);
+}
+
+TEST(HierarchicalBootstrap, RunsOfOtherShapesAreRefused) {
+  EXPECT_THROW(hierarchical_interval({}, kRatio, 1), std::invalid_argument);
+  EXPECT_THROW(hierarchical_interval({run(350, 100), {run(350, 100)[0]}}, kRatio, 1), std::invalid_argument);
+}
+
 TEST(Bootstrap, PlacementAgainstABand) {
   const Interval band{2.0, 4.0};
   EXPECT_EQ(placement({2.5, 3.5}, band), Placement::inside);

@@ -1,10 +1,11 @@
-// The history of benchmark runs (experiments/bench/history.hpp) and the verdict across its runs
-// (experiments/claims/speed_verdict.hpp, across_runs): every run agreeing gives its verdict, a reproduced run beside
-// a not-reproduced one gives machine-dependent, undecided runs beside agreeing ones leave the claim inconclusive;
-// on synthetic history entries and benchmark files, merged from whole processes and recorded once.
+// The history of benchmark runs (experiments/bench/history.hpp) and the verdicts across it: the rule the engine's
+// targets take run by run (experiments/claims/speed_verdict.hpp, across_runs: every run agreeing gives its
+// verdict, a reproduced run beside a not-reproduced one gives machine-dependent, undecided runs beside agreeing
+// ones leave it inconclusive), and the speed claims on history entries of different machines (each a machine of
+// one run, decided as across_machines decides machines); on synthetic history entries and benchmark files, merged
+// from whole processes and recorded once, with their repetitions.
 #include "experiments/bench/history.hpp"
 #include "experiments/bench/merge_processes.hpp"
-#include "experiments/claims/engine_speed.hpp"
 #include "experiments/claims/registry.hpp"
 #include "experiments/claims/speed_verdict.hpp"
 
@@ -86,9 +87,12 @@ TEST(SpeedHistory, RunsThatAgreeDecideTheClaim) {
   const Outcome outcome = eig_speedup(dir);  // band [2.13, 4.80]: both inside
   EXPECT_EQ(outcome.verdict, V::reproduced) << outcome.summary;
   EXPECT_EQ(outcome.evidence.measurements["runs"].size(), 2u);
-  EXPECT_EQ(outcome.evidence.details["tables"][0]["rows"].size(), 2u);
   EXPECT_EQ(outcome.evidence.measurements["latest_run"], "2026-01-02-b");
-  EXPECT_NE(outcome.summary.find("CPU A: reproduced"), std::string::npos) << outcome.summary;
+  EXPECT_NE(outcome.summary.find("CPU A, CPU flags not recorded, compiler not recorded, 1 run: reproduced"),
+            std::string::npos)
+      << outcome.summary;
+  EXPECT_EQ(outcome.evidence.measurements["machines"].size(), 2u);
+  EXPECT_EQ(outcome.evidence.details["tables"][1]["rows"].size(), 2u);
 }
 
 TEST(SpeedHistory, RunsThatDisagreeMakeItMachineDependent) {
@@ -178,26 +182,10 @@ TEST(SpeedHistory, MergedProcessesAreRecordedOnce) {
   EXPECT_TRUE(runs[0].recorded);
   EXPECT_EQ(runs[0].note, "a test");
   EXPECT_EQ(runs[0].figures.at("eig3/eigen-qr ÷ eig3/viete").measured.ci95->lo, ratio.measured.ci95->lo);
-}
-
-TEST(SpeedHistory, EngineTargetsAreDecidedRunByRun) {
-  auto entry = [](const std::string& id, double frames_per_s) {
-    bench::RecordedRun run;
-    run.id = id;
-    run.date = id;
-    run.machine = {{"cpu", id}, {"cores", 2}};
-    run.figures["frame/F/mesh"] = {
-        "bench_interp", "frames/s",
-        bench::Measured{frames_per_s, bench::Interval{frames_per_s - 5, frames_per_s + 5}, 10}};
-    run.figures["setup/F/mesh"] = {"bench_interp", "ms", bench::Measured{100, bench::Interval{95, 105}, 10}};
-    return run;
-  };
-  const nlohmann::json met = engine_speed_by_run({entry("a", 300), entry("b", 320)});
-  EXPECT_EQ(met["across_runs"]["F"], "reproduced");
-  const nlohmann::json split = engine_speed_by_run({entry("a", 300), entry("b", 100)});
-  EXPECT_EQ(split["rows"].size(), 2u);
-  EXPECT_EQ(split["rows"][1]["verdict"], "not-reproduced");
-  EXPECT_EQ(split["across_runs"]["F"], "machine-dependent");
+  // The entry keeps the repetitions its figures were computed from, by process, for pooling a machine's runs.
+  ASSERT_TRUE(runs[0].repetitions.contains("eig3/eigen-qr"));
+  EXPECT_EQ(runs[0].repetitions.at("eig3/eigen-qr").size(), 2u);
+  EXPECT_EQ(runs[0].repetitions.at("eig3/viete"), run->repetitions.at("eig3/viete"));
 }
 
 }  // namespace

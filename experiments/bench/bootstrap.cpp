@@ -22,6 +22,35 @@ std::size_t draw(Rng& rng, std::size_t n) {
   return static_cast<std::size_t>(rng.integer(0, static_cast<std::int64_t>(n) - 1));
 }
 
+/// Throws std::invalid_argument unless every run has the same number of samples, each run's samples the same
+/// number of processes, and every process a repetition.
+void check_levels(const std::vector<RunSamples>& runs) {
+  if (runs.empty() || runs.front().empty()) throw std::invalid_argument("bootstrap of no sample");
+  for (const RunSamples& samples : runs) {
+    if (samples.size() != runs.front().size()) throw std::invalid_argument("bootstrap of runs with other samples");
+    const std::size_t processes = samples.front().size();
+    for (const ByProcess& sample : samples) {
+      if (sample.size() != processes || processes == 0)
+        throw std::invalid_argument("bootstrap of samples from different processes");
+      for (const auto& process : sample)
+        if (process.empty()) throw std::invalid_argument("bootstrap of an empty sample");
+    }
+  }
+}
+
+/// Appends to each sample of `resample` one resample of `run`: its processes drawn with replacement (the same
+/// draw for every sample, whose benchmarks ran side by side in each process), then the repetitions within each.
+void add_run_resample(Rng& rng, const RunSamples& run, std::vector<std::vector<double>>& resample) {
+  const std::size_t processes = run.front().size();
+  std::vector<std::size_t> chosen(processes);
+  for (std::size_t p = 0; p < processes; ++p) chosen[p] = processes > 1 ? draw(rng, processes) : p;
+  for (std::size_t s = 0; s < run.size(); ++s)
+    for (const std::size_t p : chosen) {
+      const std::vector<double>& process = run[s][p];
+      for (std::size_t i = 0; i < process.size(); ++i) resample[s].push_back(process[draw(rng, process.size())]);
+    }
+}
+
 }  // namespace
 
 double median(std::span<const double> x) {
@@ -38,31 +67,22 @@ std::vector<double> pooled(const ByProcess& x) {
   return all;
 }
 
-Interval bootstrap_interval(const std::vector<ByProcess>& samples,
-                            const std::function<double(const std::vector<std::vector<double>>&)>& statistic,
-                            std::uint64_t seed, double level, std::size_t resamples) {
-  if (samples.empty()) throw std::invalid_argument("bootstrap of no sample");
-  const std::size_t processes = samples.front().size();
-  for (const auto& sample : samples) {
-    if (sample.size() != processes || processes == 0)
-      throw std::invalid_argument("bootstrap of samples from different processes");
-    for (const auto& process : sample)
-      if (process.empty()) throw std::invalid_argument("bootstrap of an empty sample");
-  }
+Interval bootstrap_interval(const RunSamples& samples, const Statistic& statistic, std::uint64_t seed, double level,
+                            std::size_t resamples) {
+  return hierarchical_interval({samples}, statistic, seed, level, resamples);
+}
+
+Interval hierarchical_interval(const std::vector<RunSamples>& runs, const Statistic& statistic, std::uint64_t seed,
+                               double level, std::size_t resamples) {
+  check_levels(runs);
   Rng rng(seed);
-  std::vector<std::vector<double>> resample(samples.size());
-  std::vector<std::size_t> chosen(processes, 0);
+  std::vector<std::vector<double>> resample(runs.front().size());
+  std::vector<std::size_t> drawn_runs(runs.size());
   std::vector<double> statistics(resamples);
   for (double& value : statistics) {
-    if (processes > 1)  // first stage: the processes, the same draw for every sample
-      for (std::size_t& p : chosen) p = draw(rng, processes);
-    for (std::size_t s = 0; s < samples.size(); ++s) {  // second stage: the repetitions within each
-      resample[s].clear();
-      for (const std::size_t p : chosen) {
-        const std::vector<double>& process = samples[s][p];
-        for (std::size_t i = 0; i < process.size(); ++i) resample[s].push_back(process[draw(rng, process.size())]);
-      }
-    }
+    for (auto& sample : resample) sample.clear();
+    for (std::size_t k = 0; k < runs.size(); ++k) drawn_runs[k] = runs.size() > 1 ? draw(rng, runs.size()) : k;
+    for (const std::size_t r : drawn_runs) add_run_resample(rng, runs[r], resample);
     value = statistic(resample);
   }
   std::sort(statistics.begin(), statistics.end());

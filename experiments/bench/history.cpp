@@ -75,7 +75,12 @@ std::optional<RecordedRun> current_run(const fs::path& bench_dir, const std::str
     }
     const nlohmann::json dates = dates_of(results->context);
     run->programs[std::string(program.name)] = {{"processes", dates.size()}, {"dates", dates}};
-    run->figures.merge(speed_figures(program, *results));
+    for (auto& [key, figure] : speed_figures(program, *results)) {
+      for (const std::string& benchmark : figure_reads(key).benchmarks)
+        if (const auto found = results->repetitions.find(benchmark); found != results->repetitions.end())
+          run->repetitions[benchmark] = found->second;
+      run->figures.emplace(key, std::move(figure));
+    }
   }
   if (run) {  // <date>-<cpu>-<widest vector extension>
     run->id = run->date.substr(0, 10);
@@ -94,11 +99,8 @@ nlohmann::json to_json(const RecordedRun& run) {
                     {"ci95", interval_json(figure.measured.ci95)},
                     {"repetitions", figure.measured.repetitions},
                     {"processes", figure.measured.processes}};
-  return {{"date", run.date},
-          {"machine", run.machine},
-          {"note", run.note},
-          {"programs", run.programs},
-          {"figures", figures}};
+  return {{"date", run.date},         {"machine", run.machine}, {"note", run.note},
+          {"programs", run.programs}, {"figures", figures},     {"repetitions", run.repetitions}};
 }
 
 RecordedRun run_from_json(const nlohmann::json& json, const std::string& id) {
@@ -116,6 +118,7 @@ RecordedRun run_from_json(const nlohmann::json& json, const std::string& id) {
     if (f.at("ci95").is_array()) m.ci95 = Interval{f["ci95"][0].get<double>(), f["ci95"][1].get<double>()};
     run.figures[key] = {f.at("program").get<std::string>(), f.value("unit", ""), m};
   }
+  if (json.contains("repetitions")) run.repetitions = json["repetitions"].get<std::map<std::string, ByProcess>>();
   return run;
 }
 

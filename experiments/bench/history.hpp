@@ -1,9 +1,10 @@
 #pragma once
 // The history of benchmark runs: one committed entry per run of the benchmarks, under
 // reports/bench/history/, each naming its machine (CPU model and flags, cores, compiler and flags, library
-// versions), its date, how many whole processes each program ran in, and every speed figure with its 95%
-// bootstrap interval (speed_figures.hpp). A CPU's name does not identify a machine, so runs are kept side by side,
-// never merged; the speed verdicts are decided over all of them (experiments/claims/speed_verdict.hpp).
+// versions), its date, how many whole processes each program ran in, every speed figure with its 95%
+// bootstrap interval (speed_figures.hpp), and the repetitions those figures were computed from. Entries are kept
+// side by side, one per run; the speed verdicts pool the runs of one machine (pooled.hpp) and decide across
+// machines (experiments/claims/speed_verdict.hpp).
 #include "experiments/bench/speed_figures.hpp"
 
 #include <nlohmann/json.hpp>
@@ -24,6 +25,9 @@ struct RecordedRun {
   /// Per program: {"processes": whole processes, "dates": each process's start}; identifies the run.
   nlohmann::json programs = nlohmann::json::object();
   std::map<std::string, Figure> figures;
+  /// Per benchmark a figure reads (figure_reads): its repetitions by process, which pool the runs of one machine
+  /// (pooled.hpp); empty in an entry recorded without them.
+  std::map<std::string, ByProcess> repetitions;
   bool recorded = true;  ///< false for the benchmark files of a folder that no entry records yet
 };
 

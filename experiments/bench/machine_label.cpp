@@ -4,8 +4,12 @@ namespace affinterp::bench {
 
 std::string widest_vector_isa(const std::string& flags) {
   const std::string list = " " + flags + " ";  // each flag between spaces
-  for (const char* isa : {"avx512f", "avx2", "avx", "sse4_2"})
-    if (list.find(" " + std::string(isa) + " ") != std::string::npos) return isa;
+  for (const char* isa : {"avx512f", "avx2", "avx", "sse4_2"}) {
+    std::string flag = " ";  // appended: GCC 12 misreports " " + isa + " " (-Wrestrict)
+    flag += isa;
+    flag += ' ';
+    if (list.find(flag) != std::string::npos) return isa;
+  }
   return "no AVX";
 }
 
@@ -16,6 +20,16 @@ std::string machine_label(const nlohmann::json& cpu, const nlohmann::json& flags
 
 std::string machine_label(const nlohmann::json& machine) {
   return machine_label(machine.value("cpu", nlohmann::json()), machine.value("cpu_flags", nlohmann::json()));
+}
+
+std::string machine_key(const nlohmann::json& machine) {
+  const auto part = [&](const char* key, const char* what) {
+    const nlohmann::json value = machine.value(key, nlohmann::json());
+    return value.is_string() ? value.get<std::string>() : std::string(what) + " not recorded";
+  };
+  const nlohmann::json flags = machine.value("cpu_flags", nlohmann::json());
+  const std::string isa = flags.is_string() ? widest_vector_isa(flags.get<std::string>()) : "CPU flags not recorded";
+  return part("cpu", "CPU") + ", " + isa + ", " + part("compiler", "compiler");
 }
 
 }  // namespace affinterp::bench

@@ -19,4 +19,10 @@ std::string machine_label(const nlohmann::json& cpu, const nlohmann::json& flags
 /// machine_label of a recorded run's machine (history.hpp's RecordedRun::machine: "cpu", "cpu_flags").
 std::string machine_label(const nlohmann::json& machine);
 
+/// The key runs are pooled by (speed_verdict.hpp): runs with one key are one machine. "<cpu>, <widest vector
+/// extension>, <compiler>" from a recorded run's machine ("cpu", "cpu_flags", "compiler"): the same model can
+/// come with another vector extension (a VM's bare "AMD EPYC"), and another compiler or version moves speed
+/// ratios as much as another CPU. A part not recorded reads "<part> not recorded".
+std::string machine_key(const nlohmann::json& machine);
+
 }  // namespace affinterp::bench

@@ -46,6 +46,14 @@ std::string ratio_key(std::string_view slow, std::string_view fast);
 std::string frame_rate_key(std::string_view energy_mesh);
 std::string setup_key(std::string_view energy_mesh);
 
+/// How a figure is computed from its benchmarks' repetitions: median(benchmarks[0]) / median(benchmarks[1]) for a
+/// ratio key ("slow ÷ fast"), else of_median(median(benchmarks[0])) for a monotone of_median.
+struct FigureReads {
+  std::vector<std::string> benchmarks;
+  double (*of_median)(double) = nullptr;  ///< null for a ratio
+};
+FigureReads figure_reads(std::string_view key);
+
 /// One figure of a run, and its unit ("×", "ns", "frames/s", "ms").
 struct Figure {
   std::string program;

@@ -34,12 +34,15 @@ Verdict all_of(std::span<const Verdict> verdicts) {
   return Verdict::inconclusive;
 }
 
-Verdict across_runs(std::span<const Verdict> runs) {
-  const auto any = [&](Verdict v) { return std::ranges::find(runs, v) != runs.end(); };
+Verdict across_machines(std::span<const Verdict> machines) {
+  const auto any = [&](Verdict v) { return std::ranges::find(machines, v) != machines.end(); };
   if (any(Verdict::reproduced) && any(Verdict::not_reproduced)) return Verdict::machine_dependent;
-  if (!runs.empty() && std::ranges::all_of(runs, [&](Verdict v) { return v == runs.front(); })) return runs.front();
+  if (!machines.empty() && std::ranges::all_of(machines, [&](Verdict v) { return v == machines.front(); }))
+    return machines.front();
   return Verdict::inconclusive;
 }
+
+Verdict across_runs(std::span<const Verdict> runs) { return across_machines(runs); }
 
 nlohmann::json ci95_json(const Measured& m) {
   return m.ci95 ? nlohmann::json{m.ci95->lo, m.ci95->hi} : nlohmann::json();

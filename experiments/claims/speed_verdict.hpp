@@ -1,8 +1,9 @@
 #pragma once
-// The verdict on a measured figure (issue 11) and on the runs of its history (issue 21). One run: reproduced when
-// the figure's 95% bootstrap interval (experiments/bench/measured.hpp) lies in the band of values the claim's
-// wording allows, not-reproduced when it lies outside, inconclusive when it straddles an edge or when fewer than
-// kMinRepetitions repetitions were recorded. Several runs, each on its machine: across_runs.
+// The verdict on a measured figure and on the machines that measured it. One interval: reproduced when it (a
+// figure's 95% bootstrap interval, experiments/bench/measured.hpp, or one machine's pooled interval,
+// experiments/bench/pooled.hpp) lies in the band of values the claim's wording allows, not-reproduced when it lies
+// outside, inconclusive when it straddles an edge or when fewer than kMinRepetitions repetitions were recorded.
+// Several machines: across_machines.
 #include "experiments/bench/measured.hpp"
 #include "experiments/claims/verdict.hpp"
 
@@ -31,10 +32,23 @@ inline Verdict verdict_of(const Measured& m, Interval band) { return verdict_of(
 Verdict all_of(std::initializer_list<Verdict> verdicts);
 Verdict all_of(std::span<const Verdict> verdicts);
 
-/// The rule across the recorded runs (reports/bench/history), as the report states it (kAcrossRunsRule): the
-/// verdict every run gives when they all give the same; machine-dependent when one run is reproduced and
-/// another not-reproduced; otherwise (the runs that decide agree, some do not decide) inconclusive, as is an
-/// empty history.
+/// The rule across machines, as the report states it (kAcrossMachinesRule): each machine (one machine_key:
+/// CPU model, widest vector extension, compiler) decided on its runs pooled; the verdict every machine gives when
+/// they all give the same; machine-dependent when one machine is reproduced and another not-reproduced;
+/// otherwise (the machines that decide agree, some do not decide) inconclusive, as is an empty history.
+Verdict across_machines(std::span<const Verdict> machines);
+inline constexpr std::string_view kAcrossMachinesRule =
+    "the recorded runs (reports/bench/history/, one entry per run of the benchmarks) are grouped by machine (same "
+    "CPU model, widest vector extension among its flags, compiler and version); each machine is decided by the "
+    "interval rule on its pooled interval: the same statistic over the repetitions of all its runs, its 95% "
+    "percentile interval from a hierarchical bootstrap that draws the machine's runs with replacement, then each "
+    "drawn run's processes, then each drawn process's repetitions (10,000 resamples, seed 2015; a machine of one "
+    "run keeps that run's interval); the claim is reproduced (not-reproduced) iff every machine is, "
+    "machine-dependent iff one machine is reproduced and another not-reproduced, else inconclusive (some machines "
+    "undecided, none contradicting another)";
+
+/// The engine's speed targets (engine_speed.hpp) still decide run by run: the verdict every run gives when they
+/// all agree, machine-dependent when one run meets a target and another misses it, else inconclusive.
 Verdict across_runs(std::span<const Verdict> runs);
 inline constexpr std::string_view kAcrossRunsRule =
     "each recorded run (reports/bench/history/, one entry per run of the benchmarks, machine named) is decided "

@@ -1,6 +1,7 @@
 #include "experiments/claims/sym3/speed_claim.hpp"
 
 #include "experiments/bench/machine_label.hpp"
+#include "experiments/bench/pooled.hpp"
 #include "plots/figure.hpp"
 #include "plots/runs_against_band.hpp"
 
@@ -28,6 +29,10 @@ constexpr std::string_view kIntervalRule =
     "other programs (A B A B ...; experiments/reproduce.sh): the bootstrap then draws the processes first and the "
     "repetitions within them second (experiments/bench/bootstrap.hpp), so the interval covers the drift between "
     "processes on a shared machine as well as the spread within one";
+
+constexpr std::string_view kPooling =
+    "hierarchical percentile bootstrap over one machine's runs (runs, then processes, then repetitions), "
+    "experiments/bench/pooled.hpp and experiments/bench/bootstrap.hpp";
 
 constexpr std::string_view kPaperMachine =
     "Intel Core i7 1.9 GHz, 4 GB RAM, Windows 8 (64 bit), Visual Studio 2010 /O2 (thesis §3.4)";
@@ -144,56 +149,112 @@ std::string run_label(const bench::RecordedRun& run) {
   return run.date.substr(0, 10) + " " + cpu;
 }
 
-RunsDecision decide_runs(const std::vector<bench::RecordedRun>& runs, const std::vector<Reading>& readings,
-                         const std::string& title) {
-  RunsDecision decision;
-  nlohmann::json columns = {"run", "machine", "processes"};
-  for (const Reading& reading : readings) columns.push_back(reading.label + " (95% CI)");
-  columns.push_back("verdict");
-  decision.table = {{"title", title}, {"columns", columns}, {"rows", nlohmann::json::array()}};
-  decision.runs = nlohmann::json::array();
-  for (const bench::RecordedRun& run : runs) {
-    nlohmann::json row = {run.id + (run.recorded ? "" : " (not recorded yet)"), machine_text(run.machine)};
-    nlohmann::json figures = nlohmann::json::object();
-    Verdict verdict = Verdict::reproduced;
-    std::size_t processes = 0;
-    std::vector<std::string> cells;
-    for (const Reading& reading : readings) {
-      const auto figure = run.figures.find(reading.key);
-      if (figure == run.figures.end()) {
-        verdict = all_of({verdict, Verdict::inconclusive});
-        cells.push_back("not measured");
-        continue;
-      }
-      const Measured& m = figure->second.measured;
-      processes = std::max(processes, m.processes);
-      verdict = all_of({verdict, verdict_of(m, reading.band)});
-      figures[reading.label] = to_json(m, reading.band, "value");
-      cells.push_back(fixed(m.value) + (m.ci95 ? " [" + fixed(m.ci95->lo) + ", " + fixed(m.ci95->hi) + "]" : "") +
-                      ": " + std::string(to_string(verdict_of(m, reading.band))));
+namespace {
+
+/// "2.10 [2.01, 2.18]: reproduced": a figure, its interval and its verdict against `band`, for a table's cell.
+std::string cell_of(const Measured& m, Interval band) {
+  return fixed(m.value) + (m.ci95 ? " [" + fixed(m.ci95->lo) + ", " + fixed(m.ci95->hi) + "]" : "") + ": " +
+         std::string(to_string(verdict_of(m, band)));
+}
+
+/// The readings' figures of one run or one machine (each nullopt where not measured) decided together: their
+/// cells, their JSON (to_json against the band) and all_of their verdicts (not measured: inconclusive).
+struct ReadingsDecision {
+  std::vector<std::string> cells;
+  nlohmann::json figures = nlohmann::json::object();
+  Verdict verdict = Verdict::reproduced;
+};
+ReadingsDecision decide_readings(const std::vector<Reading>& readings,
+                                 const std::vector<std::optional<Measured>>& figures) {
+  ReadingsDecision decision;
+  for (std::size_t i = 0; i < readings.size(); ++i) {
+    const Reading& reading = readings[i];
+    if (!figures[i]) {
+      decision.verdict = all_of({decision.verdict, Verdict::inconclusive});
+      decision.cells.push_back("not measured");
+      continue;
     }
-    row.push_back(processes);
-    for (auto& cell : cells) row.push_back(cell);
-    row.push_back(to_string(verdict));
-    decision.table["rows"].push_back(row);
-    decision.per_run.push_back(verdict);
-    decision.runs.push_back({{"run", run.id},
-                             {"recorded", run.recorded},
-                             {"date", run.date},
-                             {"machine", run.machine},
-                             {"note", run.note},
-                             {"figures", figures},
-                             {"verdict", to_string(verdict)}});
+    decision.verdict = all_of({decision.verdict, verdict_of(*figures[i], reading.band)});
+    decision.figures[reading.label] = to_json(*figures[i], reading.band, "value");
+    decision.cells.push_back(cell_of(*figures[i], reading.band));
   }
-  decision.verdict = across_runs(decision.per_run);
   return decision;
 }
 
-std::string runs_summary(const std::vector<bench::RecordedRun>& runs, const RunsDecision& decision) {
-  std::string text = std::string(to_string(decision.verdict)) + " over " + std::to_string(runs.size()) +
-                     (runs.size() == 1 ? " run" : " recorded runs") + " (";
-  for (std::size_t r = 0; r < runs.size(); ++r)
-    text += (r ? "; " : "") + run_label(runs[r]) + ": " + std::string(to_string(decision.per_run[r]));
+nlohmann::json table(const std::string& title, nlohmann::json columns, const std::vector<Reading>& readings) {
+  for (const Reading& reading : readings) columns.push_back(reading.label + " (95% CI)");
+  columns.push_back("verdict");
+  return {{"title", title}, {"columns", std::move(columns)}, {"rows", nlohmann::json::array()}};
+}
+
+/// One run decided alone by the interval rule: its row in the run table and its entry in "runs".
+void add_run(RunsDecision& decision, const bench::RecordedRun& run, const std::vector<Reading>& readings) {
+  std::vector<std::optional<Measured>> figures;
+  std::size_t processes = 0;
+  for (const Reading& reading : readings) {
+    const auto figure = run.figures.find(reading.key);
+    figures.push_back(figure == run.figures.end() ? std::nullopt : std::optional(figure->second.measured));
+    if (figures.back()) processes = std::max(processes, figures.back()->processes);
+  }
+  const ReadingsDecision decided = decide_readings(readings, figures);
+  nlohmann::json row = {run.id + (run.recorded ? "" : " (not recorded yet)"), machine_text(run.machine), processes};
+  for (const std::string& cell : decided.cells) row.push_back(cell);
+  row.push_back(to_string(decided.verdict));
+  decision.run_table["rows"].push_back(row);
+  decision.per_run.push_back(decided.verdict);
+  decision.runs.push_back({{"run", run.id},
+                           {"machine_key", bench::machine_key(run.machine)},
+                           {"recorded", run.recorded},
+                           {"date", run.date},
+                           {"machine", run.machine},
+                           {"note", run.note},
+                           {"figures", decided.figures},
+                           {"verdict", to_string(decided.verdict)}});
+}
+
+/// One machine decided on its runs pooled (bench::pooled_figure): its row in the machine table and its entry in
+/// "machines".
+void add_machine(RunsDecision& decision, const bench::MachineRuns& machine, const std::vector<Reading>& readings) {
+  std::vector<std::optional<Measured>> figures;
+  for (const Reading& reading : readings) figures.push_back(bench::pooled_figure(machine, reading.key));
+  const ReadingsDecision decided = decide_readings(readings, figures);
+  nlohmann::json ids = nlohmann::json::array();
+  for (const bench::RecordedRun* run : machine.runs) ids.push_back(run->id);
+  nlohmann::json row = {machine.key, std::to_string(machine.runs.size()) + " (" +
+                                         machine.runs.front()->date.substr(0, 10) + " to " +
+                                         machine.runs.back()->date.substr(0, 10) + ")"};
+  for (const std::string& cell : decided.cells) row.push_back(cell);
+  row.push_back(to_string(decided.verdict));
+  decision.machine_table["rows"].push_back(row);
+  decision.per_machine.push_back(decided.verdict);
+  decision.machines.push_back(
+      {{"machine", machine.key}, {"runs", ids}, {"figures", decided.figures}, {"verdict", to_string(decided.verdict)}});
+}
+
+}  // namespace
+
+RunsDecision decide_runs(const std::vector<bench::RecordedRun>& runs, const std::vector<Reading>& readings,
+                         const std::string& title) {
+  RunsDecision decision;
+  decision.machine_table =
+      table(title + ": each machine, its runs pooled (the claim's verdict)", {"machine", "runs"}, readings);
+  decision.run_table = table(title + ": each run alone", {"run", "machine", "processes"}, readings);
+  decision.machines = decision.runs = nlohmann::json::array();
+  for (const bench::MachineRuns& machine : bench::by_machine(runs)) add_machine(decision, machine, readings);
+  for (const bench::RecordedRun& run : runs) add_run(decision, run, readings);
+  decision.verdict = across_machines(decision.per_machine);
+  return decision;
+}
+
+std::string machines_summary(const std::vector<bench::RecordedRun>& runs, const RunsDecision& decision) {
+  const std::vector<bench::MachineRuns> machines = bench::by_machine(runs);
+  std::string text = std::string(to_string(decision.verdict)) + " over " + std::to_string(machines.size()) +
+                     (machines.size() == 1 ? " machine" : " machines") + ", their runs pooled (";
+  for (std::size_t m = 0; m < machines.size(); ++m) {
+    const std::size_t n = machines[m].runs.size();
+    text += (m ? "; " : "") + machines[m].key + ", " + std::to_string(n) + (n == 1 ? " run: " : " runs: ") +
+            std::string(to_string(decision.per_machine[m]));
+  }
   return text + ")";
 }
 
@@ -222,7 +283,7 @@ Outcome about_ratio_outcome(const std::vector<bench::RecordedRun>& runs, const s
   const Interval band = about_band(paper);
   std::vector<Reading> readings{{key, band, key}};
   readings.insert(readings.end(), more.begin(), more.end());
-  const RunsDecision decision = decide_runs(runs, readings, "Each recorded run (reports/bench/history/)");
+  const RunsDecision decision = decide_runs(runs, readings, "The recorded runs (reports/bench/history/)");
   Outcome outcome;
   outcome.verdict = decision.verdict;
   outcome.evidence.method = method;
@@ -232,16 +293,19 @@ Outcome about_ratio_outcome(const std::vector<bench::RecordedRun>& runs, const s
       {"paper_ratio", paper},
       {"paper_machine", kPaperMachine},
       {"about", kAboutReading},
-      {"rule", std::string(kIntervalRule) + ". Across runs: " + std::string(kAcrossRunsRule)},
-      {"tables", nlohmann::json::array({decision.table})},
+      {"rule", std::string(kIntervalRule) + ". Across runs: " + std::string(kAcrossMachinesRule)},
+      {"pooled_bootstrap",
+       {{"seed", bench::kPooledSeed}, {"resamples", bench::kPooledResamples}, {"level", 0.95}, {"source", kPooling}}},
+      {"tables", nlohmann::json::array({decision.machine_table, decision.run_table})},
   };
   const bench::RecordedRun& latest = runs.back();
   if (const auto figure = latest.figures.find(key); figure != latest.figures.end())
     outcome.evidence.measurements = to_json(figure->second.measured, band);
   outcome.evidence.measurements["latest_run"] = latest.id;
   outcome.evidence.measurements["machine"] = latest.machine;
+  outcome.evidence.measurements["machines"] = decision.machines;
   outcome.evidence.measurements["runs"] = decision.runs;
-  outcome.evidence.measurements["across_runs"] = runs_summary(runs, decision);
+  outcome.evidence.measurements["across_machines"] = machines_summary(runs, decision);
   return outcome;
 }
 

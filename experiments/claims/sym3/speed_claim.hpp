@@ -61,15 +61,21 @@ struct Reading {
   std::string label;
 };
 
-/// Each run decided on `readings` together (all_of; a reading the run lacks is inconclusive), and the runs
-/// together (across_runs).
+/// Each machine decided on `readings` together (all_of of each reading's pooled interval against its band,
+/// bench/pooled.hpp; a reading no run measured is inconclusive), the machines together (across_machines), and
+/// each run alone by the same rule, shown beside its machine.
 struct RunsDecision {
   Verdict verdict = Verdict::inconclusive;
   std::vector<Verdict> per_run;
-  /// {"title", "columns", "rows"}: a row per run (machine, date, each reading with its interval, verdict), for
+  std::vector<Verdict> per_machine;
+  /// {"title", "columns", "rows"}: a row per machine (its key, its runs, each reading's pooled figure with its
+  /// interval, verdict), then a row per run (machine, date, each reading with its own interval, verdict), for
   /// evidence.details.tables.
-  nlohmann::json table;
-  /// [{"run", "recorded", "date", "machine", "note", "figures": {label: to_json(figure, band)}, "verdict"}].
+  nlohmann::json machine_table, run_table;
+  /// [{"machine", "runs": [ids], "figures": {label: to_json(pooled figure, band)}, "verdict"}].
+  nlohmann::json machines;
+  /// [{"run", "machine_key", "recorded", "date", "machine", "note", "figures": {label: to_json(figure, band)},
+  /// "verdict"}].
   nlohmann::json runs;
 };
 RunsDecision decide_runs(const std::vector<bench::RecordedRun>& runs, const std::vector<Reading>& readings,
@@ -78,8 +84,9 @@ RunsDecision decide_runs(const std::vector<bench::RecordedRun>& runs, const std:
 /// "2026-11-27 AMD EPYC, avx2": a run's date and its machine (bench::machine_label) without trademark signs.
 std::string run_label(const bench::RecordedRun& run);
 
-/// "reproduced on both recorded runs (…)": what the runs together say, naming each run's verdict.
-std::string runs_summary(const std::vector<bench::RecordedRun>& runs, const RunsDecision& decision);
+/// "reproduced over 2 machines (AMD EPYC, avx2, g++ 12.2.0, 3 runs: reproduced; …)": what the machines together
+/// say, naming each machine's verdict on its pooled runs.
+std::string machines_summary(const std::vector<bench::RecordedRun>& runs, const RunsDecision& decision);
 
 /// Each run's readings with their intervals against their bands (plots/runs_against_band.hpp), one panel per
 /// reading; returns the figure's files for the report.
@@ -87,10 +94,11 @@ std::vector<std::string> runs_chart(const RunSettings& ctx, const std::vector<be
                                     const std::vector<Reading>& readings, const std::string& stem,
                                     const std::string& title);
 
-/// The part every "about N× faster" outcome shares: each run's ratio key (bench/speed_figures.hpp) against
-/// about_band(paper), plus `more` readings, decided run by run and across runs (decide_runs), and the evidence
-/// fields (measurements: the latest run's ratio, ratio_ci95, band, repetitions, processes, machine, and "runs";
-/// details: paper, rule, the per-run table); callers add the summary and their own details.
+/// The part every "about N× faster" outcome shares: the ratio key (bench/speed_figures.hpp) against
+/// about_band(paper), plus `more` readings, decided per machine and across machines (decide_runs), and the
+/// evidence fields (measurements: the latest run's ratio, ratio_ci95, band, repetitions, processes, machine,
+/// "machines", "runs", "across_machines"; details: paper, rule, the pooled bootstrap's settings, the machine and
+/// run tables); callers add the summary and their own details.
 Outcome about_ratio_outcome(const std::vector<bench::RecordedRun>& runs, const std::string& key, double paper,
                             const std::string& method, std::uint64_t sample_size,
                             const std::vector<Reading>& more = {});
