@@ -105,43 +105,50 @@ std::vector<proofs::Sentence> condition_sentences(const proofs::AtlasCell& cell,
           proofs::prop_not_cond("", level, cell.variables, cell.domain, condition, property)};
 }
 
-Outcome atlas_outcome(const ClaimContext& ctx, const proofs::AtlasCell& cell, const AtlasProof& proof,
-                      const std::vector<Slice>& slices) {
-  Outcome outcome;
-  outcome.condition = cell.condition;
+namespace {
 
+/// The proof's sentences decided (each by both deciders unless z3_only): their records, whether every set is
+/// empty, and the first non-empty one with its witness.
+struct DecidedSentences {
   std::vector<ProofSentence> records;
   bool all_empty = true;
   std::optional<std::pair<std::string, proofs::Witness>> non_empty;
+};
+DecidedSentences decide_sentences(const ClaimContext& ctx, const AtlasProof& proof) {
+  DecidedSentences decided;
   for (const proofs::Sentence& sentence : proof.sentences) {
     const bool z3_alone = std::find(proof.z3_only.begin(), proof.z3_only.end(), sentence.name) != proof.z3_only.end();
     // Where QEPCAD is known not to finish (it exhausts its prime list), it gets 10 s, enough for Z3.
     const proofs::DeciderLimits limits{.seconds = z3_alone ? 10.0 : 60.0};
     const proofs::SentenceDecision d = proofs::decide_sentence(sentence, ctx.proof_files(), limits);
-    records.push_back(proofs::to_proof_sentence(sentence, d));  // throws when the deciders disagree
-    if (d.result == SetResult::non_empty && !non_empty && d.witness) non_empty.emplace(sentence.name, *d.witness);
-    all_empty = all_empty && d.result == SetResult::empty;
+    decided.records.push_back(proofs::to_proof_sentence(sentence, d));  // throws when the deciders disagree
+    if (d.result == SetResult::non_empty && !decided.non_empty && d.witness)
+      decided.non_empty.emplace(sentence.name, *d.witness);
+    decided.all_empty = decided.all_empty && d.result == SetResult::empty;
   }
-  std::vector<std::string> failed_identities;
-  for (const auto& [name, difference] : proof.identities)
-    if (!difference.is_zero()) failed_identities.push_back(name);
+  return decided;
+}
 
-  outcome.proof = proofs::make_proof(proof.scope, proof.method, records);
-  outcome.proof->cites = proof.cites;
+/// The proof of the cell from its decided sentences, with its further formulations decided; throws when a
+/// formulation finds a point where the lemma chain proves there is none.
+Proof cell_proof(const ClaimContext& ctx, const proofs::AtlasCell& cell, const AtlasProof& proof,
+                 const DecidedSentences& decided) {
+  Proof made = proofs::make_proof(proof.scope, proof.method, decided.records);
+  made.cites = proof.cites;
   // The formulations closer to the definitions take QEPCAD up to ~80 s of CPU (level D): 300 s each, as the local
   // claims' sentences.
-  proofs::add_formulations(*outcome.proof, proof.formulations, proof.attempts, ctx.proof_files(), {.seconds = 300});
-  // The formulations prove the same claim: a point in one where the lemma chain finds none is a contradiction, and
-  // the check fails loudly.
-  for (const Proof& formulation : outcome.proof->formulations)
+  proofs::add_formulations(made, proof.formulations, proof.attempts, ctx.proof_files(), {.seconds = 300});
+  for (const Proof& formulation : made.formulations)
     for (const ProofSentence& s : formulation.sentences)
-      if (all_empty && s.result == "non-empty")
+      if (decided.all_empty && s.result == "non-empty")
         throw std::runtime_error("the formulations of atlas." + cell.id() + " disagree: " + s.name + " is non-empty");
-  const std::optional<Strength> strength = proof_strength(*outcome.proof);
-  std::string checkers;
-  for (const std::string& c : outcome.proof->checked_by) checkers += (checkers.empty() ? "" : ", ") + c;
+  return made;
+}
 
-  const SampleComparison sample = compare_with_suite(cell, ctx.seed, ctx.pick(200, 2000));
+/// The second line's evidence: the method (with the suite's exact decider where it has one), the random points
+/// and their disagreements.
+void add_sample_evidence(Outcome& outcome, const proofs::AtlasCell& cell, const AtlasProof& proof,
+                         const SampleComparison& sample, std::uint64_t seed) {
   // The method says what ran: the second line only where the suite has an exact decider for the cell.
   outcome.evidence.method =
       "first-order sentences decided for all reals (the proof; each decider's answer read from its stored "
@@ -151,58 +158,78 @@ Outcome atlas_outcome(const ClaimContext& ctx, const proofs::AtlasCell& cell, co
                            std::to_string(sample.points) + " random rational points"
                      : std::string());
   outcome.evidence.sample_size = sample.points;
-  outcome.evidence.seed = ctx.seed;
+  outcome.evidence.seed = seed;
   outcome.evidence.details["condition_in_words"] = cell.condition_words;
   outcome.evidence.details["identities"] = proof.identities.size();
   outcome.evidence.details["random_points"] =
       sample.points == 0 ? nlohmann::json("no exact decider in the suite for this cell")
                          : nlohmann::json{{"points", sample.points}, {"disagreements", sample.disagreements}};
-  if (ctx.draws_figures()) outcome.figures = draw_slices(ctx, cell, slices);
+}
 
-  if (sample.first_disagreement) {
-    if (all_empty)
-      throw std::runtime_error("the proof says the condition of atlas." + cell.id() +
-                               " is exact, but the suite's decider disagrees at " +
-                               point_text(*sample.first_disagreement));
-    outcome.verdict = Verdict::refuted;
-    outcome.strength = Strength::exact_counterexample;
-    outcome.summary =
-        "the condition and the suite's exact decider disagree at " + point_text(*sample.first_disagreement);
-    outcome.counterexample = point_json(*sample.first_disagreement);
-    return outcome;
-  }
-  if (non_empty) {
-    outcome.verdict = Verdict::refuted;
-    outcome.strength = Strength::exact_counterexample;
-    outcome.summary = "the sentence " + non_empty->first + " is non-empty: the condition is not exact";
-    outcome.counterexample = point_json(non_empty->second.point);
-    outcome.counterexample["exact"] = non_empty->second.exact;
-    return outcome;
-  }
-  if (all_empty && strength && failed_identities.empty()) {
-    outcome.verdict = Verdict::confirmed;
-    outcome.strength = *strength;
-    outcome.summary =
-        "proved for all reals: good for " + std::string(proofs::to_string(cell.notion)) + " exactly when " +
-        cell.condition_words + " (" + std::to_string(records.size()) + " sentences empty; checked by " + checkers +
-        (sample.points
-             ? "; the suite's exact decider agrees at " + std::to_string(sample.points) + " random rational points"
-             : "") +
-        ")";
-    return outcome;
-  }
-  outcome.verdict = Verdict::inconclusive;
-  outcome.strength = Strength::sample;
+/// What keeps the cell unproved: the sentences not found empty by every decider, and the identities that fail.
+std::string undecided(const std::vector<ProofSentence>& records, const std::vector<std::string>& failed_identities) {
   std::string why;
   for (const ProofSentence& s : records)
     if (s.result != "empty" ||
         std::any_of(s.runs.begin(), s.runs.end(), [](const auto& r) { return r.result == "unknown"; }))
       why += (why.empty() ? "" : ", ") + s.name;
   for (const std::string& name : failed_identities) why += (why.empty() ? "identity " : ", identity ") + name;
-  outcome.summary =
-      "not proved: undecided " + why +
-      (sample.points ? "; the suite's exact decider agrees at " + std::to_string(sample.points) + " random points"
-                     : "");
+  return why;
+}
+
+/// A counterexample to the cell's condition: refuted with an exact point.
+void refute(Outcome& outcome, std::string summary, nlohmann::json point) {
+  outcome.verdict = Verdict::refuted;
+  outcome.strength = Strength::exact_counterexample;
+  outcome.summary = std::move(summary);
+  outcome.counterexample = std::move(point);
+}
+
+}  // namespace
+
+Outcome atlas_outcome(const ClaimContext& ctx, const proofs::AtlasCell& cell, const AtlasProof& proof,
+                      const std::vector<Slice>& slices) {
+  Outcome outcome;
+  outcome.condition = cell.condition;
+  const DecidedSentences decided = decide_sentences(ctx, proof);
+  std::vector<std::string> failed_identities;
+  for (const auto& [name, difference] : proof.identities)
+    if (!difference.is_zero()) failed_identities.push_back(name);
+  outcome.proof = cell_proof(ctx, cell, proof, decided);
+  const std::optional<Strength> strength = proof_strength(*outcome.proof);
+  std::string checkers;
+  for (const std::string& c : outcome.proof->checked_by) checkers += (checkers.empty() ? "" : ", ") + c;
+
+  const SampleComparison sample = compare_with_suite(cell, ctx.seed, ctx.pick(200, 2000));
+  add_sample_evidence(outcome, cell, proof, sample, ctx.seed);
+  if (ctx.draws_figures()) outcome.figures = draw_slices(ctx, cell, slices);
+  const std::string agreement =
+      sample.points ? "the suite's exact decider agrees at " + std::to_string(sample.points) + " random" : "";
+
+  if (sample.first_disagreement) {
+    if (decided.all_empty)
+      throw std::runtime_error("the proof says the condition of atlas." + cell.id() +
+                               " is exact, but the suite's decider disagrees at " +
+                               point_text(*sample.first_disagreement));
+    refute(outcome, "the condition and the suite's exact decider disagree at " + point_text(*sample.first_disagreement),
+           point_json(*sample.first_disagreement));
+  } else if (decided.non_empty) {
+    refute(outcome, "the sentence " + decided.non_empty->first + " is non-empty: the condition is not exact",
+           point_json(decided.non_empty->second.point));
+    outcome.counterexample["exact"] = decided.non_empty->second.exact;
+  } else if (decided.all_empty && strength && failed_identities.empty()) {
+    outcome.verdict = Verdict::confirmed;
+    outcome.strength = *strength;
+    outcome.summary = "proved for all reals: good for " + std::string(proofs::to_string(cell.notion)) +
+                      " exactly when " + cell.condition_words + " (" + std::to_string(decided.records.size()) +
+                      " sentences empty; checked by " + checkers +
+                      (sample.points ? "; " + agreement + " rational points" : "") + ")";
+  } else {
+    outcome.verdict = Verdict::inconclusive;
+    outcome.strength = Strength::sample;
+    outcome.summary = "not proved: undecided " + undecided(decided.records, failed_identities) +
+                      (sample.points ? "; " + agreement + " points" : "");
+  }
   return outcome;
 }
 

@@ -40,7 +40,7 @@ VecQ frame_at_one(const global_exact::RationalMeshPair& mesh, const Eigen::Matri
   auto form = global_exact::assemble(mesh, global::Energy::F, 1, mesh.linear_parts());
   form.G(0, 0) += 1, form.G(1, 1) += 1;
   form.u[0] -= 2 * r[0], form.u[1] -= 2 * r[1];
-  return global_exact::solve(form.G, local::scaled(Rational(-1, 2), form.u));
+  return global_exact::solve(form.G, affinterp::local::scaled(Rational(-1, 2), form.u));
 }
 
 VecQ flatten(const Eigen::Matrix<Rational, 2, Eigen::Dynamic>& V) {

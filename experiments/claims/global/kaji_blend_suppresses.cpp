@@ -41,7 +41,8 @@ using namespace global_figures;
 std::pair<double, double> relative_rotation_and_scale(const Eigen::Matrix2d& A, const Eigen::Matrix2d& B) {
   const Eigen::Matrix2d relative = B * A.inverse();
   if (relative.determinant() <= 0) return {std::numbers::pi, std::numeric_limits<double>::infinity()};
-  return {std::abs(local::polar_decomposition<double>(relative).theta), std::abs(std::log(relative.determinant()) / 2)};
+  return {std::abs(affinterp::local::polar_decomposition<double>(relative).theta),
+          std::abs(std::log(relative.determinant()) / 2)};
 }
 
 Outcome check(const ClaimContext& ctx) {

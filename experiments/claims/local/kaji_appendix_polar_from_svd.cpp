@@ -78,6 +78,39 @@ Proof proof(const ClaimContext& ctx) {
       proofs::prove_identities(identities, ctx.proof_files()));
 }
 
+/// Kaji Appendix, exactly for A = R_α D R_β with rational rotations: A = R_{α+β} S with S = R_{−β} D R_β
+/// symmetric positive definite, and S^n = R_{−β} D^n R_β for n = 2, 3 (the spectral powers S^t agree with D^t).
+bool exact_identities_hold(const Mat2<Rational>& R_alpha, const Mat2<Rational>& R_beta, const Mat2<Rational>& D) {
+  const Mat2<Rational> R_beta_T = R_beta.transpose();
+  const Mat2<Rational> A = product(product(R_alpha, D), R_beta), S = product(product(R_beta_T, D), R_beta);
+  bool ok = affinterp::local::exactly_equal(product(product(R_alpha, R_beta), S), A) && S(0, 1) == S(1, 0) &&
+            S(0, 0) > 0 && det2(S) > 0;
+  Mat2<Rational> S_power = S, D_power = D;
+  for (int n = 2; n <= 3; ++n) {
+    S_power = product(S_power, S), D_power = product(D_power, D);
+    ok = ok && affinterp::local::exactly_equal(S_power, product(product(R_beta_T, D_power), R_beta));
+  }
+  return ok;
+}
+
+/// The largest deviation in Real50 of the library's factors from the Appendix's: polar_decomposition(A) against
+/// R_{α+β} and S, and the fractional power (R_{−β} D^{2/3} R_β)^3 against S² (β = 2 atan u_β).
+Real50 real50_deviation(const Mat2<Rational>& R_alpha, const Mat2<Rational>& R_beta, const Rational& x,
+                        const Rational& y, const Rational& u_beta) {
+  const auto to50 = [](const Mat2<Rational>& M) {
+    return Mat2<Real50>(M.unaryExpr([](const Rational& q) { return Real50(q); }));
+  };
+  const Mat2<Rational> D = diagonal(x, y), A = product(product(R_alpha, D), R_beta),
+                       S = product(product(R_beta.transpose(), D), R_beta);
+  const auto polar = affinterp::local::polar_decomposition(to50(A));
+  Real50 worst = (polar.S - to50(S)).norm() / to50(S).norm();
+  worst = std::max(worst, Real50((affinterp::local::rotation(polar.theta) - to50(product(R_alpha, R_beta))).norm()));
+  const Real50 beta = 2 * atan(Real50(u_beta));  // R_β = rational_rotation(u_β)
+  const Svd<Real50> S_eigen{-beta, Real50(x), Real50(y), beta};
+  const Mat2<Real50> root3 = affinterp::local::spd_power(S_eigen, Real50(2) / 3);  // S^{2/3}
+  return std::max(worst, Real50((root3 * root3 * root3 - to50(product(S, S))).norm() / to50(product(S, S)).norm()));
+}
+
 Outcome check(const ClaimContext& ctx) {
   const Rational step = ctx.pick(Rational(1) / 2, Rational(1) / 8);
   const std::vector<Rational> rotations = grid(-2, 2, Rational(1) / 2);
@@ -90,30 +123,9 @@ Outcome check(const ClaimContext& ctx) {
           ++cases;
           const Mat2<Rational> R_alpha = rational_rotation<Mat2<Rational>>(u_alpha),
                                R_beta = rational_rotation<Mat2<Rational>>(u_beta);
-          const Mat2<Rational> R_beta_T = R_beta.transpose(), D = diagonal(x, y);
-          // Kaji Appendix: A = R_α D R_β, S = R_{−β} D R_β.
-          const Mat2<Rational> A = product(product(R_alpha, D), R_beta), S = product(product(R_beta_T, D), R_beta);
-          bool ok = affinterp::local::exactly_equal(product(product(R_alpha, R_beta), S), A) && S(0, 1) == S(1, 0) &&
-                    S(0, 0) > 0 && det2(S) > 0;
-          Mat2<Rational> S_power = S, D_power = D;
-          for (int n = 2; n <= 3; ++n) {
-            S_power = product(S_power, S), D_power = product(D_power, D);
-            ok = ok && affinterp::local::exactly_equal(S_power, product(product(R_beta_T, D_power), R_beta));
-          }
-          failures += !ok;
+          failures += !exact_identities_hold(R_alpha, R_beta, diagonal(x, y));
           if (u_alpha != Rational(1) / 2 && u_alpha != -1) continue;  // Real50 part on a subset
-          const auto to50 = [](const Mat2<Rational>& M) {
-            return Mat2<Real50>(M.unaryExpr([](const Rational& q) { return Real50(q); }));
-          };
-          const auto polar = affinterp::local::polar_decomposition(to50(A));
-          worst = std::max(worst, Real50((polar.S - to50(S)).norm() / to50(S).norm()));
-          worst = std::max(worst,
-                           Real50((affinterp::local::rotation(polar.theta) - to50(product(R_alpha, R_beta))).norm()));
-          const Real50 beta = 2 * atan(Real50(u_beta));  // R_β = rational_rotation(u_β)
-          const Svd<Real50> S_eigen{-beta, Real50(x), Real50(y), beta};
-          const Mat2<Real50> root3 = affinterp::local::spd_power(S_eigen, Real50(2) / 3);  // S^{2/3}
-          worst = std::max(worst,
-                           Real50((root3 * root3 * root3 - to50(product(S, S))).norm() / to50(product(S, S)).norm()));
+          worst = std::max(worst, real50_deviation(R_alpha, R_beta, x, y, u_beta));
         }
   Outcome outcome;
   outcome.evidence.method =

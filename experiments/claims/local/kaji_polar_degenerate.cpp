@@ -86,6 +86,22 @@ std::optional<Verdict> proof_verdict(const ProofRun& run) {
   return Verdict::corrected;
 }
 
+/// The proof's own counterexample to Kaji's "det A^P(t) < 0 for some t": a point of the non-empty
+/// printed.never-negative where det A^P(t) = det((1-t)I + tS) never goes negative, re-verified exactly.
+void add_proof_counterexample(Outcome& outcome, const ProofRun& proof) {
+  const auto never_negative_at = [](const logic::Point& p) {
+    const Rational &l1 = p.at("l1"), &l2 = p.at("l2");
+    return l1 > 0 && l2 > 0 && !(l1 == 1 && l2 == 1) && !takes_negative_value(blend_determinant(diagonal(l1, l2)));
+  };
+  if (const auto point = counterexample(proof, "printed.never-negative", never_negative_at, {{{"l1", 2}, {"l2", 2}}}))
+    outcome.counterexample["from_proof"] = {
+        {"point", exact_point({{"l1", point->at("l1")}, {"l2", point->at("l2")}})},
+        {"never_negative (exact sign analysis)", true},
+        {"found_by",
+         "a point of the non-empty printed.never-negative (the deciders' sample point, or a simple candidate when "
+         "they print none), shrunk and re-verified exactly"}};
+}
+
 Outcome check(const ClaimContext& ctx) {
   const Rational step = ctx.pick(Rational(1) / 4, Rational(1) / 32);
   std::uint64_t cases = 0, never_negative = 0, corrected_failures = 0;
@@ -136,19 +152,7 @@ Outcome check(const ClaimContext& ctx) {
   }
   ProofRun proof = run_proof(ctx, proof_plan());
   require_agreement(outcome, proof_verdict(proof));
-  if (never_negative > 0) {
-    const auto never_negative_at = [](const logic::Point& p) {
-      const Rational &l1 = p.at("l1"), &l2 = p.at("l2");
-      return l1 > 0 && l2 > 0 && !(l1 == 1 && l2 == 1) && !takes_negative_value(blend_determinant(diagonal(l1, l2)));
-    };
-    if (const auto point = counterexample(proof, "printed.never-negative", never_negative_at, {{{"l1", 2}, {"l2", 2}}}))
-      outcome.counterexample["from_proof"] = {
-          {"point", exact_point({{"l1", point->at("l1")}, {"l2", point->at("l2")}})},
-          {"never_negative (exact sign analysis)", true},
-          {"found_by",
-           "a point of the non-empty printed.never-negative (the deciders' sample point, or a simple candidate when "
-           "they print none), shrunk and re-verified exactly"}};
-  }
+  if (never_negative > 0) add_proof_counterexample(outcome, proof);
   attach_proof(outcome, std::move(proof));
   return outcome;
 }

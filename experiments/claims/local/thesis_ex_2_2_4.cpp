@@ -90,11 +90,36 @@ Formula differ(const PolyMat2& X, const PolyMat2& Y) {
   return logic::disjunction(std::move(parts));
 }
 
+/// A sentence in r3 = √3 (r3² = 3, r3 > 0, so Q(√3)'s entries are polynomials in r3), empty iff `f` never holds.
+proofs::Sentence in_sqrt3(std::string name, std::string meaning, const Formula& f) {
+  const Polynomial r3 = var("r3");
+  return sentence(std::move(name), std::move(meaning), {"r3"}, logic::equal(r3 * r3, 3) && logic::greater(r3, 0) && f);
+}
+
+/// The thesis's statements straight from Defs 2.2.1 and 2.2.2 (level L, unit v), Lemma
+/// L4 decided; `decompositions` and `svd_not_good_area_L` are the plan's sentences of the same statements.
+proofs::FormulationPlan as_written(const PolyMat2& A, const PolyMat2& S, const proofs::Sentence& decompositions,
+                                   const proofs::Sentence& svd_not_good_area_L) {
+  return {
+      "Defs 2.2.1 and 2.2.2 as written (level L) for every statement of the thesis: det A(t) > 0 for every t in "
+      "[0, 1] and monotone for all 0 <= s <= t <= 1; ||A(t)v|| monotone for all 0 <= s <= t <= 1 and every unit "
+      "v, through its square (Lemma L4, a sentence); the rotations have det 1 and are orthogonal (Lemma L5, "
+      "identities). No other lemma",
+      {lemma_L4(), decompositions,
+       in_sqrt3("linear-good-area.L", "the linear interpolation of A is good for area (level L)",
+                area_property(A, "L")),
+       in_sqrt3("linear-good-norm.L", "the linear interpolation of A is good for norm (level L)",
+                norm_property(A, "L")),
+       svd_not_good_area_L,
+       in_sqrt3("polar-not-good-area.L", "the polar interpolation (S) is not good for area (level L)",
+                !area_property(S, "L")),
+       in_sqrt3("polar-not-good-norm.L", "the polar interpolation (S) is not good for norm (level L)",
+                !norm_property(S, "L"))}};
+}
+
 /// The proof: every statement of the example as an existential sentence in r3 = √3 that is empty iff it holds.
 ProofPlan proof_plan() {
   const auto [P, Q, A_printed, D_printed, S_printed] = printed_example();
-  const Polynomial r3 = var("r3");
-  const Formula sqrt3 = logic::equal(r3 * r3, 3) && logic::greater(r3, 0);
   const PolyMat2 A = in_r3(A_printed), D = in_r3(D_printed), S = in_r3(S_printed);
   using affinterp::claims::local::product;  // of polynomial matrices
   const PolyMat2 svd = product(product(in_r3(rotation_pi_thirds(1)), D), in_r3(rotation_pi_thirds(-5)));
@@ -105,9 +130,6 @@ ProofPlan proof_plan() {
     for (int i = 0; i < 2; ++i)
       eq1.push_back(logic::not_equal(A[i][0] * in_r3(P(0, j)) + A[i][1] * in_r3(P(1, j)), in_r3(Q(i, j))));
   const Formula S_positive = logic::greater(S[0][0], 0) && logic::greater(det(S), 0);
-  const auto in_sqrt3 = [&](std::string name, std::string meaning, const Formula& f) {
-    return sentence(std::move(name), std::move(meaning), {"r3"}, sqrt3 && f);
-  };
   ProofPlan plan{
       "the worked example: r3 = sqrt 3 (r3^2 = 3, r3 > 0); entries in Q(sqrt 3)",
       "every statement as an existential sentence in r3 that is empty iff it holds: the decompositions and eq. (1) "
@@ -129,23 +151,8 @@ ProofPlan proof_plan() {
                 logic::not_equal(var("beta"), 0) && svd_norm_property(Polynomial(2), Polynomial(1), var("beta")))},
       {}};
   plan.sentences.push_back(in_sqrt3("svd-not-good-area.L", "the same at level L", !area_property(D, "L")));
-  // Issue 17: the thesis's statements straight from Defs 2.2.1 and 2.2.2 (level L, unit v); Lemma L4 decided.
-  plan.formulations.push_back(
-      {"Defs 2.2.1 and 2.2.2 as written (level L) for every statement of the thesis: det A(t) > 0 for every t in "
-       "[0, 1] and monotone for all 0 <= s <= t <= 1; ||A(t)v|| monotone for all 0 <= s <= t <= 1 and every unit v, "
-       "through its square (Lemma L4, a sentence); the rotations have det 1 and are orthogonal (Lemma L5, "
-       "identities). No other lemma",
-       {lemma_L4(), plan.sentences.front(),
-        in_sqrt3("linear-good-area.L", "the linear interpolation of A is good for area (level L)",
-                 area_property(A, "L")),
-        in_sqrt3("linear-good-norm.L", "the linear interpolation of A is good for norm (level L)",
-                 norm_property(A, "L")),
-        plan.sentences.back(),
-        in_sqrt3("polar-not-good-area.L", "the polar interpolation (S) is not good for area (level L)",
-                 !area_property(S, "L")),
-        in_sqrt3("polar-not-good-norm.L", "the polar interpolation (S) is not good for norm (level L)",
-                 !norm_property(S, "L"))}});
-  // Issue 17: Def 2.2.2 for the SVD homotopy as written is no sentence for a decider.
+  plan.formulations.push_back(as_written(A, S, plan.sentences.front(), plan.sentences.back()));
+  // Def 2.2.2 for the SVD homotopy as written is no sentence for a decider.
   plan.attempts.push_back(
       {.formulation = "beyond the thesis, svd-good-norm-some-beta as written (Def 2.2.2 for R_{t alpha}((1-t)I + "
                       "tD)R_{t beta})",

@@ -139,28 +139,131 @@ nlohmann::json proof_counterexample(const ProofRun& run) {
            "Lemmas L9 + L12 (G(1) < 0, exact) and along the witness direction (Real50)"}};
 }
 
+/// The (x, y, β) grid: x = i/per_unit, y = j/per_unit in (0, 3], β = 2πk/angles in [0, 2π) (the thesis takes
+/// α, β ∈ [0, 2π)); the printed condition and the exact property (Lemmas L9 + L12) at each case.
+struct Grid {
+  int per_unit, angles;
+  using Case = std::tuple<int, int, int>;  // (i, j, k)
+
+  Rational x_of(const Case& c) const { return Rational(std::get<0>(c)) / per_unit; }
+  Rational y_of(const Case& c) const { return Rational(std::get<1>(c)) / per_unit; }
+  Rational beta_over_pi(const Case& c) const { return Rational(2 * std::get<2>(c)) / angles; }
+  bool condition(const Case& c) const { return thm_2_2_3_condition(x_of(c), y_of(c)); }
+  bool property(const Case& c) const { return svd_good_for_norm_at_pi_multiple(x_of(c), y_of(c), beta_over_pi(c)); }
+  /// Simplest first, the usual order x >= y preferred.
+  double cost(const Case& c) const {
+    return height(x_of(c)) + height(y_of(c)) + height(beta_over_pi(c)) + (x_of(c) < y_of(c) ? 0.5 : 0);
+  }
+  std::vector<Case> cases() const {
+    std::vector<Case> all;
+    for (int i = 1; i <= 3 * per_unit; ++i)
+      for (int j = 1; j <= 3 * per_unit; ++j)
+        for (int k = 0; k < angles; ++k) all.emplace_back(i, j, k);
+    return all;
+  }
+};
+
+/// A witness that |A_s(t)v| is not monotone at (x, y, β): v = e1 or e2 and three quarter times where it rises then
+/// falls (Real50), else Lemma L9's witness direction.
+nlohmann::json grid_witness(const Real50& x, const Real50& y, const Real50& beta) {
+  for (const auto& [phi_name, phi] : {std::pair{"0", Real50(0)}, std::pair{"pi/2", affinterp::local::pi<Real50>() / 2}})
+    for (int a = 0; a <= 4; ++a)
+      for (int b = a + 1; b <= 4; ++b)
+        for (int e = b + 1; e <= 4; ++e) {
+          const Real50 fa = svd_norm_squared_50(x, y, beta, phi, Real50(a) / 4),
+                       fb = svd_norm_squared_50(x, y, beta, phi, Real50(b) / 4),
+                       fe = svd_norm_squared_50(x, y, beta, phi, Real50(e) / 4);
+          if ((fb - fa) * (fb - fe) > Real50("1e-30"))
+            return {{"v", phi_name == std::string("0") ? nlohmann::json{"1", "0"} : nlohmann::json{"0", "1"}},
+                    {"t",
+                     {exact::to_string(Rational(a) / 4), exact::to_string(Rational(b) / 4),
+                      exact::to_string(Rational(e) / 4)}},
+                    {"|A_s(t)v|^2 (Real50)", {fa.str(30), fb.str(30), fe.str(30)}}};
+        }
+  return lemma_l9_witness(x, y, beta);
+}
+
+/// The grid's verdict: confirmed when the printed condition matches the exact decision everywhere; refuted,
+/// with the simplest grid case where the condition holds but the norm is not monotone (and its witness), or
+/// with the count of good cases the condition misses.
+template <typename Tally>
+void decide_on_grid(Outcome& outcome, const Grid& grid, const Tally& tally, const Tally& unrotated) {
+  if (tally.disagreements() == 0) {
+    outcome.verdict = Verdict::confirmed;
+    outcome.summary =
+        "the printed condition matches the exact decision on all " + std::to_string(tally.cases) + " cases";
+    return;
+  }
+  outcome.verdict = Verdict::refuted;
+  if (tally.condition_only.count == 0) {
+    outcome.summary =
+        std::to_string(tally.property_only.count) + " cases fail the printed condition but are good for norm";
+    return;
+  }
+  const Grid::Case& c = *tally.condition_only.simplest;
+  const Real50 x(static_cast<double>(grid.x_of(c))), y(static_cast<double>(grid.y_of(c)));
+  const Real50 beta = 2 * affinterp::local::pi<Real50>() * std::get<2>(c) / grid.angles;
+  const affinterp::local::Svd<Real50> svd{Real50(0), x, y, beta};
+  outcome.summary = std::to_string(tally.condition_only.count) + " of " + std::to_string(tally.cases) +
+                    " (x, y, beta) cases satisfy the printed condition but |A_s(t)v| is not monotone for some v; " +
+                    std::to_string(tally.property_only.count) + " fail the condition yet are good. At beta = 0 the " +
+                    "condition is exact (" + std::to_string(unrotated.disagreements()) + " disagreements of " +
+                    std::to_string(unrotated.cases) + "): the proof drops R_{t beta}";
+  outcome.counterexample = {
+      {"x", exact::to_string(grid.x_of(c))},
+      {"y", exact::to_string(grid.y_of(c))},
+      {"alpha", "0"},
+      {"beta", angle_name(2 * std::get<2>(c), grid.angles)},
+      {"A",
+       float_matrix(svd.matrix().unaryExpr([](const Real50& a) { return abs(a) < Real50("1e-40") ? Real50(0) : a; }))},
+      {"printed_condition", true},
+      {"witness", grid_witness(x, y, beta)}};
+}
+
+/// The decided proof against the grid (the printed condition exact iff both directions are empty), its
+/// counterexample where the condition is not sufficient, and the exact region (atlas.svd.norm).
+void add_proof(const ClaimContext& ctx, Outcome& outcome) {
+  ProofRun proof = run_proof(ctx, proof_plan());
+  if (proof.decided()) {
+    const bool printed_exact =
+        proof.result("printed.cond-not-prop.G") == "empty" && proof.result("printed.prop-not-cond.inst") == "empty";
+    require_agreement(outcome, printed_exact ? Verdict::confirmed : Verdict::refuted);
+    if (proof.result("printed.cond-not-prop.G") == "non-empty")
+      outcome.counterexample["from_proof"] = proof_counterexample(proof);
+  }
+  outcome.summary +=
+      ". Exact region (atlas.svd.norm, Lemmas L9 + L12): good iff beta^2 (x-y)^2 (x+y)^2 <= 4xy(x-1)(y-1), beta in "
+      "radians";
+  attach_proof(outcome, std::move(proof));
+}
+
+/// Per (x, y): good for every grid β (the theorem's "iff" over all SVDs) against the printed condition.
+std::vector<std::string> region_figure(const ClaimContext& ctx, const Grid& grid,
+                                       const std::vector<Grid::Case>& cases) {
+  std::map<std::pair<int, int>, bool> good_for_all;
+  for (const Grid::Case& c : cases) {
+    auto [it, fresh] = good_for_all.try_emplace({std::get<0>(c), std::get<1>(c)}, true);
+    it->second = it->second && grid.property(c);
+  }
+  std::vector<plots::RegionPoint> points;
+  for (const auto& [ij, good] : good_for_all) {
+    const Rational x = Rational(ij.first) / grid.per_unit, y = Rational(ij.second) / grid.per_unit;
+    points.push_back({static_cast<double>(x), static_cast<double>(y), thm_2_2_3_condition(x, y), good});
+  }
+  return draw_region_figure(ctx, "thesis-thm-2.2.3-region",
+                            "Thm 2.2.3 (SVD interpolation): printed condition vs good for norm for every grid beta",
+                            "x", "y", points, 0.5 / grid.per_unit);
+}
+
 Outcome check(const ClaimContext& ctx) {
-  // (x, y) = (i, j)/per_unit in (0, 3]; β = 2πk/angles in [0, 2π) (the thesis takes α, β ∈ [0, 2π)).
-  const int per_unit = ctx.pick(2, 8), angles = ctx.pick(12, 48);
-  using Case = std::tuple<int, int, int>;  // (i, j, k): x = i/per_unit, y = j/per_unit, β = 2πk/angles
-  std::vector<Case> cases;
-  for (int i = 1; i <= 3 * per_unit; ++i)
-    for (int j = 1; j <= 3 * per_unit; ++j)
-      for (int k = 0; k < angles; ++k) cases.emplace_back(i, j, k);
-  const auto x_of = [&](const Case& c) { return Rational(std::get<0>(c)) / per_unit; };
-  const auto y_of = [&](const Case& c) { return Rational(std::get<1>(c)) / per_unit; };
-  const auto beta_over_pi = [&](const Case& c) { return Rational(2 * std::get<2>(c)) / angles; };
-  const auto condition = [&](const Case& c) { return thm_2_2_3_condition(x_of(c), y_of(c)); };
-  const auto property = [&](const Case& c) {
-    return svd_good_for_norm_at_pi_multiple(x_of(c), y_of(c), beta_over_pi(c));
-  };
-  const auto cost = [&](const Case& c) {  // simplest first, the usual order x >= y preferred
-    return height(x_of(c)) + height(y_of(c)) + height(Rational(2 * std::get<2>(c)) / angles) +
-           (x_of(c) < y_of(c) ? 0.5 : 0);
-  };
+  const Grid grid{ctx.pick(2, 8), ctx.pick(12, 48)};
+  const std::vector<Grid::Case> cases = grid.cases();
+  const auto condition = [&](const Grid::Case& c) { return grid.condition(c); };
+  const auto property = [&](const Grid::Case& c) { return grid.property(c); };
+  const auto cost = [&](const Grid::Case& c) { return grid.cost(c); };
   const auto tally = compare_over(cases, ctx.threads, condition, property, cost);
-  std::vector<Case> unrotated;  // β = 0: the case the thesis's proof actually computes
-  for (const Case& c : cases)
+  std::vector<Grid::Case> unrotated;  // β = 0: the case the thesis's proof actually computes
+  for (const Grid::Case& c : cases)
     if (std::get<2>(c) == 0) unrotated.push_back(c);
   const auto unrotated_tally = compare_over(unrotated, ctx.threads, condition, property, cost);
 
@@ -180,88 +283,12 @@ Outcome check(const ClaimContext& ctx) {
       "on [0, 1]; Lemma L12: iff G(1) >= 0, i.e. beta^2 (x-y)^2 (x+y)^2 <= 4xy(x-1)(y-1), beta in radians; decided "
       "exactly against rational bounds on pi (theory/local/svd_norm_goodness.hpp)";
   outcome.evidence.details["grid"] =
-      "x, y in (0, 3] step 1/" + std::to_string(per_unit) + "; beta = 2 pi k/" + std::to_string(angles);
+      "x, y in (0, 3] step 1/" + std::to_string(grid.per_unit) + "; beta = 2 pi k/" + std::to_string(grid.angles);
   outcome.evidence.details["printed_condition"] = tally.summary();
   outcome.evidence.details["printed_condition_at_beta_0"] = unrotated_tally.summary();
-
-  if (tally.disagreements() == 0) {
-    outcome.verdict = Verdict::confirmed;
-    outcome.summary =
-        "the printed condition matches the exact decision on all " + std::to_string(tally.cases) + " cases";
-  } else if (tally.condition_only.count > 0) {
-    // Shrink: the simplest failing grid case; then look for a witness at v = e1, e2 and quarter times.
-    const Case& c = *tally.condition_only.simplest;
-    const Real50 x(static_cast<double>(x_of(c))), y(static_cast<double>(y_of(c)));
-    const Real50 beta = 2 * affinterp::local::pi<Real50>() * std::get<2>(c) / angles;
-    nlohmann::json witness;
-    for (const auto& [phi_name, phi] :
-         {std::pair{"0", Real50(0)}, std::pair{"pi/2", affinterp::local::pi<Real50>() / 2}}) {
-      for (int a = 0; a <= 4 && witness.is_null(); ++a)
-        for (int b = a + 1; b <= 4 && witness.is_null(); ++b)
-          for (int e = b + 1; e <= 4 && witness.is_null(); ++e) {
-            const Real50 fa = svd_norm_squared_50(x, y, beta, phi, Real50(a) / 4),
-                         fb = svd_norm_squared_50(x, y, beta, phi, Real50(b) / 4),
-                         fe = svd_norm_squared_50(x, y, beta, phi, Real50(e) / 4);
-            if ((fb - fa) * (fb - fe) > Real50("1e-30"))
-              witness = {{"v", phi_name == std::string("0") ? nlohmann::json{"1", "0"} : nlohmann::json{"0", "1"}},
-                         {"t",
-                          {exact::to_string(Rational(a) / 4), exact::to_string(Rational(b) / 4),
-                           exact::to_string(Rational(e) / 4)}},
-                         {"|A_s(t)v|^2 (Real50)", {fa.str(30), fb.str(30), fe.str(30)}}};
-          }
-    }
-    if (witness.is_null()) witness = lemma_l9_witness(x, y, beta);
-    const affinterp::local::Svd<Real50> svd{Real50(0), x, y, beta};
-    outcome.verdict = Verdict::refuted;
-    outcome.summary = std::to_string(tally.condition_only.count) + " of " + std::to_string(tally.cases) +
-                      " (x, y, beta) cases satisfy the printed condition but |A_s(t)v| is not monotone for some v; " +
-                      std::to_string(tally.property_only.count) +
-                      " fail the condition yet are good. At beta = 0 the "
-                      "condition is exact (" +
-                      std::to_string(unrotated_tally.disagreements()) + " disagreements of " +
-                      std::to_string(unrotated_tally.cases) + "): the proof drops R_{t beta}";
-    outcome.counterexample = {{"x", exact::to_string(x_of(c))},
-                              {"y", exact::to_string(y_of(c))},
-                              {"alpha", "0"},
-                              {"beta", angle_name(2 * std::get<2>(c), angles)},
-                              {"A", float_matrix(svd.matrix().unaryExpr(
-                                        [](const Real50& a) { return abs(a) < Real50("1e-40") ? Real50(0) : a; }))},
-                              {"printed_condition", true},
-                              {"witness", witness}};
-  } else {
-    outcome.verdict = Verdict::refuted;
-    outcome.summary =
-        std::to_string(tally.property_only.count) + " cases fail the printed condition but are good for norm";
-  }
-  ProofRun proof = run_proof(ctx, proof_plan());
-  if (proof.decided()) {
-    const bool printed_exact =
-        proof.result("printed.cond-not-prop.G") == "empty" && proof.result("printed.prop-not-cond.inst") == "empty";
-    require_agreement(outcome, printed_exact ? Verdict::confirmed : Verdict::refuted);
-    if (proof.result("printed.cond-not-prop.G") == "non-empty")
-      outcome.counterexample["from_proof"] = proof_counterexample(proof);
-  }
-  outcome.summary +=
-      ". Exact region (atlas.svd.norm, Lemmas L9 + L12): good iff beta^2 (x-y)^2 (x+y)^2 <= 4xy(x-1)(y-1), beta in "
-      "radians";
-  attach_proof(outcome, std::move(proof));
-  if (ctx.draws_figures()) {
-    // Per (x, y): good for every grid β (the theorem's "iff" over all SVDs) vs the printed condition.
-    std::map<std::pair<int, int>, bool> good_for_all;
-    for (const Case& c : cases) {
-      auto [it, fresh] = good_for_all.try_emplace({std::get<0>(c), std::get<1>(c)}, true);
-      it->second = it->second && property(c);
-    }
-    std::vector<plots::RegionPoint> points;
-    for (const auto& [ij, good] : good_for_all) {
-      const Rational x = Rational(ij.first) / per_unit, y = Rational(ij.second) / per_unit;
-      points.push_back({static_cast<double>(x), static_cast<double>(y), thm_2_2_3_condition(x, y), good});
-    }
-    outcome.figures =
-        draw_region_figure(ctx, "thesis-thm-2.2.3-region",
-                           "Thm 2.2.3 (SVD interpolation): printed condition vs good for norm for every grid beta", "x",
-                           "y", points, 0.5 / per_unit);
-  }
+  decide_on_grid(outcome, grid, tally, unrotated_tally);
+  add_proof(ctx, outcome);
+  if (ctx.draws_figures()) outcome.figures = region_figure(ctx, grid, cases);
   return outcome;
 }
 

@@ -81,6 +81,20 @@ ProofPlan proof_plan() {
           {proofs::norm_directions_literal(printed)}};
 }
 
+/// The decided proof of Thm 2.2.5's "iff" (both directions empty: confirmed, else refuted) against the grid's
+/// verdict, and whether its second conjunct is implied by the first on the domain (atlas.polar.norm).
+void add_proof(const ClaimContext& ctx, Outcome& outcome) {
+  ProofRun proof = run_proof(ctx, proof_plan());
+  if (proof.decided())
+    require_agreement(outcome, proof.result("printed.cond-not-prop.N") == "empty" &&
+                                       proof.result("printed.prop-not-cond.N") == "empty"
+                                   ? Verdict::confirmed
+                                   : Verdict::refuted);
+  if (proof.decided() && proof.result("printed.second-conjunct-implied") == "empty")
+    outcome.summary += "; the second conjunct is implied by (x-1)(y-1) >= h^2 on the domain (atlas.polar.norm)";
+  attach_proof(outcome, std::move(proof));
+}
+
 Outcome check(const ClaimContext& ctx) {
   const Rational step = ctx.pick(Rational(1) / 4, Rational(1) / 16);
   using Case = std::tuple<Rational, Rational, Rational>;  // S = [[x, h], [h, y]]
@@ -125,15 +139,7 @@ Outcome check(const ClaimContext& ctx) {
                               {"h", exact::to_string(std::get<2>(c))}, {"printed_condition", condition(c)},
                               {"good_for_norm", property(c)},          {"witness", norm_witness(S_of(c))}};
   }
-  ProofRun proof = run_proof(ctx, proof_plan());
-  if (proof.decided())
-    require_agreement(outcome, proof.result("printed.cond-not-prop.N") == "empty" &&
-                                       proof.result("printed.prop-not-cond.N") == "empty"
-                                   ? Verdict::confirmed
-                                   : Verdict::refuted);
-  if (proof.decided() && proof.result("printed.second-conjunct-implied") == "empty")
-    outcome.summary += "; the second conjunct is implied by (x-1)(y-1) >= h^2 on the domain (atlas.polar.norm)";
-  attach_proof(outcome, std::move(proof));
+  add_proof(ctx, outcome);
   if (ctx.draws_figures()) {
     std::vector<plots::RegionPoint> points;
     for (const Case& c : cases)

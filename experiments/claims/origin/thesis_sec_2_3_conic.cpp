@@ -101,6 +101,52 @@ Proof proof(const ClaimContext& ctx, const GiNaC::ex& P) {
       proofs::prove_identities(identities, ctx.proof_files()), std::move(decided));
 }
 
+/// The locus for the chapter introduction's other reading: first origin fixed at zero, second origin o.
+GiNaC::ex locus_with_first_origin_at_zero(const origin::OriginStudy& study) {
+  const origin::Symbols& s = origin::symbols();
+  const GiNaC::matrix zero = origin::column(0, 0), o = origin::column(s.x, s.y);
+  const GiNaC::ex E2_zero_o =
+      origin::energy_E2(study.config.A[0], study.config.A[1], origin::intermediate_map(study.config, 0, s.v),
+                        origin::intermediate_map(study.config, 1, s.v), zero, o);
+  return origin::locus_polynomial(study.min_E1.value - origin::minimise(E2_zero_o, s.unknowns).value);
+}
+
+/// The proof's parts in order: denominator, locus (identities), then the printed pair, the corrected pair and the
+/// denominator sentence. Where both deciders answered, they must say what the symbolic comparison says.
+void require_proof_agrees(const Proof& proof, bool printed_holds, bool denominator_positive) {
+  const auto& parts = proof.sentences;
+  const auto decided_as = [&](std::size_t i, bool empty) {
+    return parts[i].result == "unknown" || parts[i].result == (empty ? "empty" : "non-empty");
+  };
+  const bool consistent = parts[0].result == "zero" && parts[1].result == "zero" &&
+                          (printed_holds ? decided_as(2, true) && decided_as(3, true)
+                                         : !(parts[2].result == "empty" && parts[3].result == "empty")) &&
+                          decided_as(4, true) && decided_as(5, true) && decided_as(6, denominator_positive);
+  if (!consistent) throw std::runtime_error("the proof disagrees with the symbolic comparison of the locus");
+}
+
+/// Points on one curve and off the other, both ways, with min E2(o, o) there: the printed conic is not the locus.
+nlohmann::json counterexample_points(const origin::OriginStudy& study, const GiNaC::ex& P, const GiNaC::ex& Q) {
+  const origin::Symbols& s = origin::symbols();
+  const GiNaC::ex min_E2 = study.min_E2_common.value;
+  nlohmann::json ce = {{"A1", exact_matrix(study.config.A[0])},
+                       {"A2", exact_matrix(study.config.A[1])},
+                       {"min E1", exact_number(study.min_E1.value)}};
+  if (const auto p = first_off(origin::small_rational_points(P, 6), Q)) {
+    const GiNaC::lst at{s.x == p->first, s.y == p->second};
+    ce["on the computed locus, off the printed conic"] = {{"x", exact_number(p->first)},
+                                                          {"y", exact_number(p->second)},
+                                                          {"min E2(o, o)", exact_number(min_E2.subs(at))},
+                                                          {"printed conic value", exact_number(Q.subs(at))}};
+  }
+  if (const auto q = first_off(origin::small_rational_points(Q, 6), P)) {
+    const GiNaC::lst at{s.x == q->first, s.y == q->second};
+    ce["on the printed conic, off the computed locus"] = {
+        {"x", exact_number(q->first)}, {"y", exact_number(q->second)}, {"min E2(o, o)", exact_number(min_E2.subs(at))}};
+  }
+  return ce;
+}
+
 Outcome check(const ClaimContext& ctx) {
   const origin::Symbols& s = origin::symbols();
   const origin::OriginStudy& study = origin::thesis_study();
@@ -117,15 +163,7 @@ Outcome check(const ClaimContext& ctx) {
   // What the thesis's own min E2 formula implies (min E1 being min E2 at o = 0 by Def. 2.3.1).
   const GiNaC::ex printed_formula = origin::printed::min_E2();
   const GiNaC::ex implied = origin::locus_polynomial(printed_formula.subs(at_zero) - printed_formula);
-
-  // Another reading, from the chapter's introduction: first origin fixed at zero, second origin o.
-  const GiNaC::matrix zero = origin::column(0, 0), o = origin::column(s.x, s.y);
-  const GiNaC::ex E2_zero_o =
-      origin::energy_E2(study.config.A[0], study.config.A[1], origin::intermediate_map(study.config, 0, s.v),
-                        origin::intermediate_map(study.config, 1, s.v), zero, o);
-  const GiNaC::ex P_zero_o = origin::locus_polynomial(min_E1 - origin::minimise(E2_zero_o, s.unknowns).value);
-
-  const auto on_P = origin::small_rational_points(P, 6), on_Q = origin::small_rational_points(Q, 6);
+  const GiNaC::ex P_zero_o = locus_with_first_origin_at_zero(study);
 
   Outcome out;
   out.evidence.method =
@@ -146,22 +184,11 @@ Outcome check(const ClaimContext& ctx) {
       {"printed min E2 formula implies the computed locus", origin::proportional(implied, P)},
       {"locus for the reading o1 = 0, o2 = o (chapter introduction)", polynomial_formula(P_zero_o)},
       {"printed conic matches the reading o1 = 0, o2 = o", origin::proportional(P_zero_o, Q)},
-      {"rational points on the computed locus", points_json(on_P)},
-      {"rational points on the printed conic", points_json(on_Q)},
+      {"rational points on the computed locus", points_json(origin::small_rational_points(P, 6))},
+      {"rational points on the printed conic", points_json(origin::small_rational_points(Q, 6))},
   };
-
   out.proof = proof(ctx, P);
-  // The proof's parts in order: denominator, locus (identities), then the printed pair, the corrected pair and the
-  // denominator sentence. Where both deciders answered, they must say what the symbolic comparison says.
-  const auto& parts = out.proof->sentences;
-  const auto decided_as = [&](std::size_t i, bool empty) {
-    return parts[i].result == "unknown" || parts[i].result == (empty ? "empty" : "non-empty");
-  };
-  const bool consistent = parts[0].result == "zero" && parts[1].result == "zero" &&
-                          (printed_holds ? decided_as(2, true) && decided_as(3, true)
-                                         : !(parts[2].result == "empty" && parts[3].result == "empty")) &&
-                          decided_as(4, true) && decided_as(5, true) && decided_as(6, denominator_positive);
-  if (!consistent) throw std::runtime_error("the proof disagrees with the symbolic comparison of the locus");
+  require_proof_agrees(*out.proof, printed_holds, denominator_positive);
   const bool is_conic = origin::total_degree(P) == 2 && denominator_positive;
   if (printed_holds) {
     out.verdict = Verdict::confirmed;
@@ -174,23 +201,7 @@ Outcome check(const ClaimContext& ctx) {
       out.summary += " (which misses o = (0, 0), where both energies are E1 by definition)";
     if (is_conic)
       out.correction = "the origins with min E1 = min E2(o, o) form the conic " + polynomial_formula(P) + " = 0";
-    nlohmann::json ce = {{"A1", exact_matrix(study.config.A[0])},
-                         {"A2", exact_matrix(study.config.A[1])},
-                         {"min E1", exact_number(min_E1)}};
-    if (const auto p = first_off(on_P, Q)) {
-      const GiNaC::lst at{s.x == p->first, s.y == p->second};
-      ce["on the computed locus, off the printed conic"] = {{"x", exact_number(p->first)},
-                                                            {"y", exact_number(p->second)},
-                                                            {"min E2(o, o)", exact_number(min_E2.subs(at))},
-                                                            {"printed conic value", exact_number(Q.subs(at))}};
-    }
-    if (const auto q = first_off(on_Q, P)) {
-      const GiNaC::lst at{s.x == q->first, s.y == q->second};
-      ce["on the printed conic, off the computed locus"] = {{"x", exact_number(q->first)},
-                                                            {"y", exact_number(q->second)},
-                                                            {"min E2(o, o)", exact_number(min_E2.subs(at))}};
-    }
-    out.counterexample = ce;
+    out.counterexample = counterexample_points(study, P, Q);
   }
   if (ctx.draws_figures()) out.figures = ctx.figure_refs(plots::draw_fig_2_6(ctx.figure_dir, study.config, P, Q));
   return out;

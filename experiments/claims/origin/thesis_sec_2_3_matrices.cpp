@@ -79,41 +79,49 @@ Proof proof(const ClaimContext& ctx, const origin::TwoTriangles& config) {
       proofs::prove_identities(identities, ctx.proof_files()));
 }
 
-Outcome check(const ClaimContext& ctx) {
+/// Whether each printed matrix is its world-coordinate map written about the origin o, X = T(X⁰, −o) (Def. 2.3.2);
+/// B2 in both readings of b21, b22.
+struct AboutOrigin {
+  bool A1 = false, A2 = false, B1 = false, B2_printed = false, B2_intended = false;
+};
+AboutOrigin about_origin(const origin::TwoTriangles& config) {
   const origin::Symbols& s = origin::symbols();
-  const origin::TwoTriangles config = origin::thesis_two_triangles();
   const GiNaC::matrix B1 = origin::intermediate_map(config, 0, s.v), B2 = origin::intermediate_map(config, 1, s.v);
-
-  // Each printed matrix should be its world-coordinate map written about the origin o: X = T(X⁰, −o).
-  const bool B1_holds = origin::is_zero_matrix(origin::translate_origin(B1, minus_o()).sub(origin::printed::B1()));
-  const auto B2_holds = [&](Reading reading) {
-    return origin::is_zero_matrix(origin::translate_origin(B2, minus_o()).sub(origin::printed::B2(reading)));
+  const auto holds = [](const GiNaC::matrix& world, const GiNaC::matrix& printed) {
+    return origin::is_zero_matrix(origin::translate_origin(world, minus_o()).sub(printed));
   };
-  const bool B2_printed = B2_holds(Reading::as_printed), B2_intended = B2_holds(Reading::intended);
-  const auto A_holds = [&](unsigned i, const GiNaC::matrix& printed) {
-    return origin::is_zero_matrix(origin::translate_origin(config.A[i], minus_o()).sub(printed));
-  };
-  const bool A1_holds = A_holds(0, origin::printed::A1()), A2_holds = A_holds(1, origin::printed::A2());
+  return {holds(config.A[0], origin::printed::A1()), holds(config.A[1], origin::printed::A2()),
+          holds(B1, origin::printed::B1()), holds(B2, origin::printed::B2(Reading::as_printed)),
+          holds(B2, origin::printed::B2(Reading::intended))};
+}
 
-  // One target configuration: A1 and A2 must send the shared vertices p2, p3 to the same points.
-  nlohmann::json shared = nlohmann::json::array();
+/// One target configuration: A1 and A2 must send the shared vertices p2, p3 to the same points. Each vertex's
+/// images, and both maps' images of the edge in words.
+struct SharedEdge {
+  nlohmann::json vertices = nlohmann::json::array();
   std::string by_A1, by_A2;
-  bool shared_edge_agrees = true;
+  bool agrees = true;
+};
+SharedEdge shared_edge(const origin::TwoTriangles& config) {
+  SharedEdge edge;
   for (unsigned k : {1u, 2u}) {
     const GiNaC::matrix p = origin::column(config.source(0, k), config.source(1, k));
     const GiNaC::matrix q1 = origin::apply(config.A[0], p), q2 = origin::apply(config.A[1], p);
     const bool agrees = origin::is_zero_matrix(q1.sub(q2));
-    shared_edge_agrees = shared_edge_agrees && agrees;
-    by_A1 += (by_A1.empty() ? "" : ", ") + text(q1);
-    by_A2 += (by_A2.empty() ? "" : ", ") + text(q2);
-    shared.push_back({{"vertex", k == 1 ? "p2" : "p3"},
-                      {"p", point(p)},
-                      {"A1 p", point(q1)},
-                      {"A2 p", point(q2)},
-                      {"agree", agrees}});
+    edge.agrees = edge.agrees && agrees;
+    edge.by_A1 += (edge.by_A1.empty() ? "" : ", ") + text(q1);
+    edge.by_A2 += (edge.by_A2.empty() ? "" : ", ") + text(q2);
+    edge.vertices.push_back({{"vertex", k == 1 ? "p2" : "p3"},
+                             {"p", point(p)},
+                             {"A1 p", point(q1)},
+                             {"A2 p", point(q2)},
+                             {"agree", agrees}});
   }
+  return edge;
+}
 
-  // The target triangles A_i(T_i) that the maps imply, corner by corner.
+/// The target triangles A_i(T_i) that the maps imply, corner by corner.
+nlohmann::json target_triangles(const origin::TwoTriangles& config) {
   nlohmann::json targets = nlohmann::json::object();
   for (unsigned i = 0; i < 2; ++i) {
     nlohmann::json corners = nlohmann::json::array();
@@ -121,7 +129,61 @@ Outcome check(const ClaimContext& ctx) {
       corners.push_back(point(origin::apply(config.A[i], origin::column(config.source(0, k), config.source(1, k)))));
     targets[i == 0 ? "A1(T1) = (A1 p1, A1 p2, A1 p3)" : "A2(T2) = (A2 p2, A2 p4, A2 p3)"] = corners;
   }
+  return targets;
+}
 
+/// The proof's two checkers decide the same identities as the symbolic comparison; a difference is reported.
+void require_proof_agrees(const Proof& proof, const AboutOrigin& about, const SharedEdge& edge) {
+  const std::vector<bool> symbolic = {about.A1,
+                                      about.A2,
+                                      about.B1,
+                                      about.B2_intended,
+                                      about.B2_printed,
+                                      edge.vertices[0]["agree"].get<bool>(),
+                                      edge.vertices[1]["agree"].get<bool>()};
+  for (std::size_t i = 0; i < symbolic.size(); ++i)
+    if ((proof.sentences[i].result == "zero") != symbolic[i])
+      throw std::runtime_error("the proof's identity " + proof.sentences[i].name +
+                               " disagrees with the symbolic comparison");
+}
+
+/// The verdict: confirmed when the matrices are one configuration written about o, corrected when only B2's
+/// missing '+' stands in the way, refuted otherwise (A1 and A2 from two configurations, or o entering otherwise).
+void decide(Outcome& out, const origin::TwoTriangles& config, const AboutOrigin& about, const SharedEdge& edge) {
+  const bool origin_role = about.B1 && about.A1 && about.A2 && about.B2_intended;
+  if (origin_role && edge.agrees) {
+    out.verdict = about.B2_printed ? Verdict::confirmed : Verdict::corrected;
+  } else {
+    out.verdict = Verdict::refuted;
+  }
+  if (!edge.agrees) {
+    const GiNaC::matrix p3_minus_p2 = origin::column(-1, 1);
+    out.summary = "A1 and A2 do not come from one target configuration: A1 sends the shared vertices p2, p3 to " +
+                  edge.by_A1 + ", A2 to " + edge.by_A2 + " (the edge p3 - p2 to " +
+                  text(origin::linear_part(config.A[0]).mul(p3_minus_p2)) + " vs " +
+                  text(origin::linear_part(config.A[1]).mul(p3_minus_p2)) +
+                  "); the origin enters A1, A2, B1 consistently as T(X, -o), B2 " +
+                  (about.B2_printed ? "too" : "only with the '+' missing in b21, b22 restored");
+    out.counterexample = {{"x", "0"},
+                          {"y", "0"},
+                          {"A1", exact_matrix(config.A[0])},
+                          {"A2", exact_matrix(config.A[1])},
+                          {"images of the shared vertices", edge.vertices}};
+  } else if (!origin_role) {
+    out.summary = "the printed matrices are not the maps of the configuration written about the origin o";
+  } else {
+    out.summary = about.B2_printed ? "the printed matrices describe one two-triangle configuration about the origin o"
+                                   : "the printed matrices describe one configuration once the '+' missing in b21, "
+                                     "b22 is restored";
+  }
+  if (out.verdict == Verdict::corrected)
+    out.correction = "b21 = -x + v2x + v3x - v4x + x(-v3x + v4x) + y(-v2x + v4x), b22 likewise in y";
+}
+
+Outcome check(const ClaimContext& ctx) {
+  const origin::TwoTriangles config = origin::thesis_two_triangles();
+  const AboutOrigin about = about_origin(config);
+  const SharedEdge edge = shared_edge(config);
   Outcome out;
   out.evidence.method = "exact symbolic identities in x, y and v (GiNaC, rational arithmetic)";
   out.evidence.sample_size = 7;
@@ -131,57 +193,18 @@ Outcome check(const ClaimContext& ctx) {
        "v4-v2 with their translations allow), T1=(p1,p2,p3), T2=(p2,p4,p3) sharing edge p2p3; A_i the affine "
        "map of T_i onto its image in ONE target configuration of four vertices; every printed matrix X(o) the "
        "world map X0 written about the origin o, X(o) = T(X0, -o) (Def. 2.3.2)"},
-      {"B1 = T(B1(v), -o)", B1_holds},
-      {"B2 = T(B2(v), -o), b21/b22 as printed ('- v4x x(...)')", B2_printed},
-      {"B2 = T(B2(v), -o), b21/b22 intended ('- v4x + x(...)')", B2_intended},
-      {"A1 = T(A1(0), -o)", A1_holds},
-      {"A2 = T(A2(0), -o)", A2_holds},
-      {"A1, A2 agree on the shared edge", shared_edge_agrees},
-      {"shared vertices", shared},
-      {"target triangles", targets},
+      {"B1 = T(B1(v), -o)", about.B1},
+      {"B2 = T(B2(v), -o), b21/b22 as printed ('- v4x x(...)')", about.B2_printed},
+      {"B2 = T(B2(v), -o), b21/b22 intended ('- v4x + x(...)')", about.B2_intended},
+      {"A1 = T(A1(0), -o)", about.A1},
+      {"A2 = T(A2(0), -o)", about.A2},
+      {"A1, A2 agree on the shared edge", edge.agrees},
+      {"shared vertices", edge.vertices},
+      {"target triangles", target_triangles(config)},
   };
-
   out.proof = proof(ctx, config);
-  // The proof's two checkers decide the same identities as the symbolic comparison above; a difference is reported.
-  const std::vector<bool> symbolic = {A1_holds,
-                                      A2_holds,
-                                      B1_holds,
-                                      B2_intended,
-                                      B2_printed,
-                                      shared[0]["agree"].get<bool>(),
-                                      shared[1]["agree"].get<bool>()};
-  for (std::size_t i = 0; i < symbolic.size(); ++i)
-    if ((out.proof->sentences[i].result == "zero") != symbolic[i])
-      throw std::runtime_error("the proof's identity " + out.proof->sentences[i].name +
-                               " disagrees with the symbolic comparison");
-  const bool origin_role = B1_holds && A1_holds && A2_holds && B2_intended;
-  if (origin_role && shared_edge_agrees) {
-    out.verdict = B2_printed ? Verdict::confirmed : Verdict::corrected;
-  } else {
-    out.verdict = Verdict::refuted;
-  }
-  if (!shared_edge_agrees) {
-    const GiNaC::matrix edge = origin::column(-1, 1);  // p3 − p2
-    out.summary = "A1 and A2 do not come from one target configuration: A1 sends the shared vertices p2, p3 to " +
-                  by_A1 + ", A2 to " + by_A2 + " (the edge p3 - p2 to " +
-                  text(origin::linear_part(config.A[0]).mul(edge)) + " vs " +
-                  text(origin::linear_part(config.A[1]).mul(edge)) +
-                  "); the origin enters A1, A2, B1 consistently as T(X, -o), B2 " +
-                  (B2_printed ? "too" : "only with the '+' missing in b21, b22 restored");
-    out.counterexample = {{"x", "0"},
-                          {"y", "0"},
-                          {"A1", exact_matrix(config.A[0])},
-                          {"A2", exact_matrix(config.A[1])},
-                          {"images of the shared vertices", shared}};
-  } else if (!origin_role) {
-    out.summary = "the printed matrices are not the maps of the configuration written about the origin o";
-  } else {
-    out.summary = B2_printed ? "the printed matrices describe one two-triangle configuration about the origin o"
-                             : "the printed matrices describe one configuration once the '+' missing in b21, "
-                               "b22 is restored";
-  }
-  if (out.verdict == Verdict::corrected)
-    out.correction = "b21 = -x + v2x + v3x - v4x + x(-v3x + v4x) + y(-v2x + v4x), b22 likewise in y";
+  require_proof_agrees(*out.proof, about, edge);
+  decide(out, config, about, edge);
   if (ctx.draws_figures()) {
     const plots::Fig27 figure = plots::draw_fig_2_7(ctx.figure_dir, config);
     out.figures = ctx.figure_refs(figure.files);

@@ -57,23 +57,61 @@ Proof proof(const ClaimContext& ctx) {
       {proofs::prove_sentence(section_2_3::hessian_sentence(), ctx.proof_files(), {.seconds = 60})});
 }
 
+/// The printed minimiser against the exact one of E2(o, o) (Def. 2.3.2), coordinate by coordinate as rational
+/// functions of (x, y): the computed coordinates, the first printed one that differs, and a small origin there.
+struct SymbolicComparison {
+  nlohmann::json computed = nlohmann::json::object();
+  std::string first_wrong;
+  std::optional<GiNaC::lst> counter_origin;
+};
+SymbolicComparison compare_symbolically(const GiNaC::lst& printed, const origin::OriginStudy& study) {
+  SymbolicComparison c;
+  for (const GiNaC::ex& relation : printed) {
+    const GiNaC::ex value = relation.lhs().subs(study.min_E2_common.minimiser);
+    c.computed[formula(relation.lhs())] = formula(value);
+    if (!(relation.rhs() - value).normal().is_zero() && c.first_wrong.empty()) {
+      c.first_wrong = formula(relation.lhs());
+      c.counter_origin = small_origin_where_differ(relation.rhs(), value);
+    }
+  }
+  return c;
+}
+
+/// An independent order of operations at `samples` random rational origins: substitute o first, then minimise;
+/// returns the printed coordinates that differ.
+int random_origin_mismatches(const GiNaC::lst& printed, const origin::OriginStudy& study, std::uint64_t seed,
+                             int samples) {
+  Rng rng(seed);
+  int mismatches = 0;
+  for (int n = 0; n < samples; ++n) {
+    const GiNaC::lst o = random_rational_origin(rng);
+    const origin::Minimum at_o = origin::minimise(study.E2_common.subs(o), origin::symbols().unknowns);
+    for (const GiNaC::ex& relation : printed)
+      if (!(relation.rhs().subs(o) - relation.lhs().subs(at_o.minimiser)).is_zero()) ++mismatches;
+  }
+  return mismatches;
+}
+
+/// The printed and the computed coordinates at the small origin where they differ.
+nlohmann::json counterexample_at(const GiNaC::lst& origin_point, const GiNaC::lst& printed,
+                                 const origin::OriginStudy& study) {
+  const origin::Symbols& s = origin::symbols();
+  nlohmann::json ce = {{"x", exact_number(GiNaC::ex(s.x).subs(origin_point))},
+                       {"y", exact_number(GiNaC::ex(s.y).subs(origin_point))}};
+  for (const GiNaC::ex& relation : printed) {
+    ce["printed " + formula(relation.lhs())] = exact_number(relation.rhs().subs(origin_point));
+    ce["computed " + formula(relation.lhs())] =
+        exact_number(relation.lhs().subs(study.min_E2_common.minimiser).subs(origin_point));
+  }
+  return ce;
+}
+
 Outcome check(const ClaimContext& ctx) {
   const origin::Symbols& s = origin::symbols();
   const origin::OriginStudy& study = origin::thesis_study();
   const GiNaC::lst printed = origin::printed::minimiser();
-
-  // Symbolic comparison, coordinate by coordinate.
-  nlohmann::json computed = nlohmann::json::object();
-  std::optional<GiNaC::lst> counter_origin;
-  std::string first_wrong;
-  for (const GiNaC::ex& relation : printed) {
-    const GiNaC::ex value = relation.lhs().subs(study.min_E2_common.minimiser);
-    computed[formula(relation.lhs())] = formula(value);
-    if (!(relation.rhs() - value).normal().is_zero() && first_wrong.empty()) {
-      first_wrong = formula(relation.lhs());
-      counter_origin = small_origin_where_differ(relation.rhs(), value);
-    }
-  }
+  const SymbolicComparison symbolic = compare_symbolically(printed, study);
+  const nlohmann::json& computed = symbolic.computed;
 
   // The same energy written with the printed matrices: equal to the definitions' under the intended
   // reading of b21, b22; as printed it is not even quadratic in v (a product v4x·x·v3x).
@@ -83,16 +121,8 @@ Outcome check(const ClaimContext& ctx) {
   for (const GiNaC::ex& equation : origin::normal_equations(literal, s.unknowns))
     stationary_for_literal = stationary_for_literal && equation.lhs().subs(printed).normal().is_zero();
 
-  // Independent order of operations at random rational origins: substitute o first, then minimise.
-  Rng rng(ctx.seed);
   const int samples = ctx.pick(4, 40);
-  int random_mismatches = 0;
-  for (int n = 0; n < samples; ++n) {
-    const GiNaC::lst o = random_rational_origin(rng);
-    const origin::Minimum at_o = origin::minimise(study.E2_common.subs(o), s.unknowns);
-    for (const GiNaC::ex& relation : printed)
-      if (!(relation.rhs().subs(o) - relation.lhs().subs(at_o.minimiser)).is_zero()) ++random_mismatches;
-  }
+  const int random_mismatches = random_origin_mismatches(printed, study, ctx.seed, samples);
 
   Outcome out;
   out.evidence.method =
@@ -112,7 +142,7 @@ Outcome check(const ClaimContext& ctx) {
       {"coordinate mismatches at random origins", random_mismatches},
   };
   out.proof = proof(ctx);
-  if (first_wrong.empty() && random_mismatches == 0) {
+  if (symbolic.first_wrong.empty() && random_mismatches == 0) {
     out.verdict = Verdict::confirmed;
     out.summary =
         "all eight printed coordinates equal the exact minimiser of E2(o, o) as rational functions of "
@@ -122,18 +152,9 @@ Outcome check(const ClaimContext& ctx) {
     weigh_confirmation_against_proof(out, "every origin");
   } else {
     out.verdict = Verdict::refuted;
-    out.summary = "the printed " + (first_wrong.empty() ? std::string("minimiser") : first_wrong) +
+    out.summary = "the printed " + (symbolic.first_wrong.empty() ? std::string("minimiser") : symbolic.first_wrong) +
                   " is not the minimiser of E2(o, o)";
-    if (counter_origin) {
-      nlohmann::json ce = {{"x", exact_number(GiNaC::ex(s.x).subs(*counter_origin))},
-                           {"y", exact_number(GiNaC::ex(s.y).subs(*counter_origin))}};
-      for (const GiNaC::ex& relation : printed) {
-        ce["printed " + formula(relation.lhs())] = exact_number(relation.rhs().subs(*counter_origin));
-        ce["computed " + formula(relation.lhs())] =
-            exact_number(relation.lhs().subs(study.min_E2_common.minimiser).subs(*counter_origin));
-      }
-      out.counterexample = ce;
-    }
+    if (symbolic.counter_origin) out.counterexample = counterexample_at(*symbolic.counter_origin, printed, study);
   }
   return out;
 }

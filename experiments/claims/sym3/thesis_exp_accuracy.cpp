@@ -188,42 +188,33 @@ void draw_figures(const ClaimContext& ctx, const std::vector<FamilySweep>& sweep
     outcome.figures.push_back(RunSettings::figure_ref(f));
 }
 
-Outcome check(const ClaimContext& ctx) {
-  const std::vector<NamedExpBatch> algorithms = algorithms_and_peers();
-  const auto index_of = [&](std::string_view name) {
-    const auto it = std::find_if(algorithms.begin(), algorithms.end(), [&](const auto& a) { return a.name == name; });
-    if (it == algorithms.end()) throw std::logic_error("sym3 algorithm " + std::string(name) + " is not registered");
-    return static_cast<std::size_t>(it - algorithms.begin());
-  };
-  const std::size_t printed = index_of(kPrinted), guarded = index_of(kGuarded), ours = index_of(kOurs);
-  const std::size_t per_family = ctx.pick(kQuickPerFamily, kFullPerFamily);
-  const std::size_t cross_checks = std::min(per_family, ctx.pick(kQuickCrossChecks, kFullCrossChecks));
-  const AccuracySweep sweep = sweep_accuracy(ctx, algorithms, per_family, cross_checks);
-  const std::vector<FamilySweep>& sweeps = sweep.families;
+/// The position of the algorithm `name` among `algorithms`.
+std::size_t index_of(const std::vector<NamedExpBatch>& algorithms, std::string_view name) {
+  const auto it = std::find_if(algorithms.begin(), algorithms.end(), [&](const auto& a) { return a.name == name; });
+  if (it == algorithms.end()) throw std::logic_error("sym3 algorithm " + std::string(name) + " is not registered");
+  return static_cast<std::size_t>(it - algorithms.begin());
+}
 
-  // The claim, in both readings, over the families whose spectra lie in [0, 3].
-  const Worst worst_printed = worst_in_thesis_range(sweeps, printed);
-  const Worst worst_guarded = worst_in_thesis_range(sweeps, guarded);
-  const bool printed_holds = worst_printed.error < kThesisErrorBound;
-  const bool guarded_holds = worst_guarded.error < kThesisErrorBound;
+/// The claim in one reading: its algorithm, worst error and family over the families in [0, 3], and whether it
+/// stays below the thesis's 10⁻⁶.
+nlohmann::json reading_json(std::string_view algorithm, const Worst& worst) {
+  return {{"algorithm", algorithm},
+          {"worst_error", error_json(worst.error)},
+          {"worst_family", worst.sweep->family->name},
+          {"holds", worst.error < kThesisErrorBound}};
+}
 
-  Outcome outcome;
-  outcome.evidence.method =
-      "sweep: relative Frobenius error ‖E − exp S‖_F / max(‖exp S‖_F, 2⁻¹⁰²²) against Arb-certified exp S "
-      "(theory/certified/sym3.hpp), counted where its ball certifies it (radius ≤ 10⁻³ · error), every algorithm "
-      "and AffineLib's expSym on every family of experiments/inputs/sym3/families.hpp; the 50-digit Boost "
-      "references cross-checked against the balls";
-  outcome.evidence.sample_size = sweep.matrices;
-  outcome.evidence.seed = ctx.seed;
-  outcome.evidence.tolerance = kThesisErrorBound;
-  outcome.evidence.worst_deviation = worst_guarded.error;
+/// What the sweep covered and found, for evidence.details: the reading, the families, the references, the peer
+/// table, both readings of the claim and the suite's own target.
+nlohmann::json sweep_details(const AccuracySweep& sweep, const std::vector<NamedExpBatch>& algorithms,
+                             std::size_t per_family, const Worst& worst_printed, const Worst& worst_guarded) {
   nlohmann::json family_list = nlohmann::json::object();
-  for (const auto& family : sweeps)
+  for (const auto& family : sweep.families)
     family_list[family.family->name] = {{"description", family.family->description},
                                         {"in_thesis_range", family.family->in_thesis_range},
                                         {"whole_double_range", family.family->whole_double_range}};
-  PeerTable peers = peer_table(sweeps, algorithms);
-  outcome.evidence.details = {
+  PeerTable peers = peer_table(sweep.families, algorithms);
+  return {
       {"reading",
        "'improved SD' = Viète eigenvalues (§3.2) then the spectral decomposition of §3.1.2 (case 3 with the "
        "corrected x) with the printed 10⁻⁶ equality threshold. Printed reading: thesis-improved-sd, Viète "
@@ -238,46 +229,69 @@ Outcome check(const ClaimContext& ctx) {
       {"peers", peers.data},
       {"failures", peers.failures},
       {"tables", nlohmann::json::array({peers.markdown})},
-      {"printed",
-       {{"algorithm", kPrinted},
-        {"worst_error", error_json(worst_printed.error)},
-        {"worst_family", worst_printed.sweep->family->name},
-        {"holds", printed_holds}}},
-      {"intended",
-       {{"algorithm", kGuarded},
-        {"worst_error", error_json(worst_guarded.error)},
-        {"worst_family", worst_guarded.sweep->family->name},
-        {"holds", guarded_holds}}},
-      {"affinterp_target", own_target_json(sweeps, ours)},
+      {"printed", reading_json(kPrinted, worst_printed)},
+      {"intended", reading_json(kGuarded, worst_guarded)},
+      {"affinterp_target", own_target_json(sweep.families, index_of(algorithms, kOurs))},
   };
-  if (sweep.references.outside > 0)
-    throw std::runtime_error(std::string(ctx.claim_id) + ": " + std::to_string(sweep.references.outside) +
-                             " Boost references lie outside Arb's balls: one of the two references is wrong");
+}
 
+/// Thesis §3.4's bound 10⁻⁶ for eigenvalues in [0, 3]: confirmed as printed, corrected by clamping Viète's p and k,
+/// or refuted in both readings.
+void decide(Outcome& outcome, const AccuracySweep& sweep, const std::vector<NamedExpBatch>& algorithms,
+            const Worst& worst_printed, const Worst& worst_guarded) {
   const std::string printed_text =
       "as printed, worst " + describe(worst_printed.error) + " (" + worst_printed.sweep->family->name + ")";
   const std::string guarded_text = "with Viète guarded against rounding, worst " + describe(worst_guarded.error) +
                                    " (" + worst_guarded.sweep->family->name + ")";
   const std::string references =
       " (certified references; largest relative radius " + short_number(sweep.references.max_relative_radius) + ")";
-  if (printed_holds) {
+  const NamedExpBatch &printed = algorithms[index_of(algorithms, kPrinted)],
+                      &guarded = algorithms[index_of(algorithms, kGuarded)];
+  if (worst_printed.error < kThesisErrorBound) {
     outcome.verdict = Verdict::confirmed;
     outcome.summary = "improved SD stays below 10⁻⁶ for eigenvalues in [0, 3]: " + printed_text + references;
-  } else if (guarded_holds) {
+  } else if (worst_guarded.error < kThesisErrorBound) {
     outcome.verdict = Verdict::corrected;
-    outcome.counterexample = counterexample(algorithms[printed], worst_printed);
+    outcome.counterexample = counterexample(printed, worst_printed);
     outcome.correction =
         "clamp Viète's p to ≤ 0 and k to [−1, 1] (rounding pushes them out of range); then the error stays "
         "below 10⁻⁶ for eigenvalues in [0, 3]";
     outcome.summary = "improved SD fails " + printed_text + "; holds " + guarded_text + references;
   } else {
     outcome.verdict = Verdict::refuted;
-    outcome.counterexample = {{"printed", counterexample(algorithms[printed], worst_printed)},
-                              {"intended", counterexample(algorithms[guarded], worst_guarded)}};
+    outcome.counterexample = {{"printed", counterexample(printed, worst_printed)},
+                              {"intended", counterexample(guarded, worst_guarded)}};
     outcome.summary =
         "improved SD exceeds 10⁻⁶ for eigenvalues in [0, 3] " + printed_text + ", and " + guarded_text + references;
   }
-  if (ctx.draws_figures()) draw_figures(ctx, sweeps, algorithms, outcome);
+}
+
+Outcome check(const ClaimContext& ctx) {
+  const std::vector<NamedExpBatch> algorithms = algorithms_and_peers();
+  const std::size_t per_family = ctx.pick(kQuickPerFamily, kFullPerFamily);
+  const std::size_t cross_checks = std::min(per_family, ctx.pick(kQuickCrossChecks, kFullCrossChecks));
+  const AccuracySweep sweep = sweep_accuracy(ctx, algorithms, per_family, cross_checks);
+
+  // The claim, in both readings, over the families whose spectra lie in [0, 3].
+  const Worst worst_printed = worst_in_thesis_range(sweep.families, index_of(algorithms, kPrinted));
+  const Worst worst_guarded = worst_in_thesis_range(sweep.families, index_of(algorithms, kGuarded));
+
+  Outcome outcome;
+  outcome.evidence.method =
+      "sweep: relative Frobenius error ‖E − exp S‖_F / max(‖exp S‖_F, 2⁻¹⁰²²) against Arb-certified exp S "
+      "(theory/certified/sym3.hpp), counted where its ball certifies it (radius ≤ 10⁻³ · error), every algorithm "
+      "and AffineLib's expSym on every family of experiments/inputs/sym3/families.hpp; the 50-digit Boost "
+      "references cross-checked against the balls";
+  outcome.evidence.sample_size = sweep.matrices;
+  outcome.evidence.seed = ctx.seed;
+  outcome.evidence.tolerance = kThesisErrorBound;
+  outcome.evidence.worst_deviation = worst_guarded.error;
+  outcome.evidence.details = sweep_details(sweep, algorithms, per_family, worst_printed, worst_guarded);
+  if (sweep.references.outside > 0)
+    throw std::runtime_error(std::string(ctx.claim_id) + ": " + std::to_string(sweep.references.outside) +
+                             " Boost references lie outside Arb's balls: one of the two references is wrong");
+  decide(outcome, sweep, algorithms, worst_printed, worst_guarded);
+  if (ctx.draws_figures()) draw_figures(ctx, sweep.families, algorithms, outcome);
   return outcome;
 }
 

@@ -64,6 +64,66 @@ Proof proof(const ClaimContext& ctx) {
       proofs::prove_identities(identities, ctx.proof_files()));
 }
 
+/// Case 3 of thesis §3.1.2 in either reading, as a function of the eigenvalues.
+auto with_reading(SdReading reading) {
+  return [reading](const Real100& l1, const Real100& l2, const Real100& l3) {
+    return affinterp::sym3::sd_case3(l1, l2, l3, reading);
+  };
+}
+
+/// The smallest counterexample to the printed form: integer spectra with Q = E, by max |λ| then Σ|λ|.
+std::optional<Trial> smallest_printed_failure() {
+  for (int bound = 1; bound <= 3; ++bound)
+    for (int a = -bound; a <= bound; ++a)
+      for (int b = a + 1; b <= bound; ++b)
+        for (int c = b + 1; c <= bound; ++c) {
+          const Trial t = run(with_exact_eigenvalues(Vec3Q(Rational(a), Rational(b), Rational(c)), Vec3Q::Zero()),
+                              with_reading(SdReading::printed));
+          if (t.deviation > Real100(kResolution)) return t;
+        }
+  return std::nullopt;
+}
+
+/// The symbolic proof must say what the sweep says: the corrected x proved (its first three sentences zero), the
+/// printed x failing (the rest non-zero).
+void require_proof_agrees(const Proof& proof, const Sweep& printed, const Sweep& corrected) {
+  const auto& sentences = proof.sentences;
+  const bool corrected_proved =
+      std::all_of(sentences.begin(), sentences.begin() + 3, [](const auto& s) { return s.result == "zero"; });
+  const bool printed_fails =
+      std::all_of(sentences.begin() + 3, sentences.end(), [](const auto& s) { return s.result == "non-zero"; });
+  if (corrected_proved != (corrected.failures == 0) || printed_fails != (printed.failures > 0))
+    throw std::runtime_error("the proof of case 3 disagrees with the 100-digit sweep");
+}
+
+/// The verdict from both readings' sweeps: confirmed as printed, corrected by x = s − t − u, or refuted; with the
+/// smallest failing spectrum and both readings' x there.
+void decide(Outcome& out, const Sweep& printed, const Sweep& corrected) {
+  const std::string correction = "x = s − t − u (y, z, s, t, u as printed)";
+  if (printed.failures == 0) {
+    out.verdict = Verdict::confirmed;
+    out.summary = "case 3 as printed gives exp S on every sample";
+  } else if (corrected.failures == 0) {
+    out.verdict = Verdict::corrected;
+    out.summary = "case 3 as printed (x = s + t + u) is wrong on " + std::to_string(printed.failures) + " of " +
+                  std::to_string(printed.samples) + " rational S; with " + correction +
+                  " it gives exp S to 100 digits on all";
+    out.correction = correction;
+  } else {
+    out.verdict = Verdict::refuted;
+    out.summary = "case 3 is wrong as printed and with x = s − t − u";
+  }
+  if (out.verdict == Verdict::confirmed) return;
+  const std::optional<Trial> smallest = smallest_printed_failure();
+  const Trial& t = smallest ? *smallest : *printed.first_failure;
+  out.counterexample = counterexample_json(t);
+  const Real100 l1(t.spectrum.lambda(0)), l2(t.spectrum.lambda(1)), l3(t.spectrum.lambda(2));
+  out.counterexample["x_printed"] = static_cast<double>(affinterp::sym3::sd_case3(l1, l2, l3, SdReading::printed).x);
+  out.counterexample["x_corrected"] =
+      static_cast<double>(affinterp::sym3::sd_case3(l1, l2, l3, SdReading::corrected).x);
+  out.counterexample["labelling"] = "λ1, λ2, λ3 = lambda in the order given";
+}
+
 Outcome check(const ClaimContext& ctx) {
   auto distinct = [](Rng& r) {
     Vec3Q l(eigenvalue(r), eigenvalue(r), eigenvalue(r));
@@ -71,37 +131,14 @@ Outcome check(const ClaimContext& ctx) {
     while (l(2) == l(0) || l(2) == l(1)) l(2) = eigenvalue(r);
     return l;
   };
-  auto with_reading = [](SdReading reading) {
-    return [reading](const Real100& l1, const Real100& l2, const Real100& l3) {
-      return affinterp::sym3::sd_case3(l1, l2, l3, reading);  // thesis §3.1.2, case 3
-    };
-  };
   const int samples = ctx.pick(20, 200);
   Rng printed_rng(ctx.seed), corrected_rng(ctx.seed);  // the same matrices for both readings
   const Sweep printed = sweep(printed_rng, samples, distinct, with_reading(SdReading::printed));
   const Sweep corrected = sweep(corrected_rng, samples, distinct, with_reading(SdReading::corrected));
 
-  // The smallest counterexample to the printed form: integer spectra with Q = E, by max |λ| then Σ|λ|.
-  std::optional<Trial> smallest;
-  for (int bound = 1; bound <= 3 && !smallest; ++bound) {
-    for (int a = -bound; a <= bound && !smallest; ++a)
-      for (int b = a + 1; b <= bound && !smallest; ++b)
-        for (int c = b + 1; c <= bound && !smallest; ++c) {
-          const Trial t = run(with_exact_eigenvalues(Vec3Q(Rational(a), Rational(b), Rational(c)), Vec3Q::Zero()),
-                              with_reading(SdReading::printed));
-          if (t.deviation > Real100(kResolution)) smallest = t;
-        }
-  }
-
   Outcome out;
   out.proof = proof(ctx);
-  const auto& sentences = out.proof->sentences;
-  const bool corrected_proved =
-      std::all_of(sentences.begin(), sentences.begin() + 3, [](const auto& s) { return s.result == "zero"; });
-  const bool printed_fails =
-      std::all_of(sentences.begin() + 3, sentences.end(), [](const auto& s) { return s.result == "non-zero"; });
-  if (corrected_proved != (corrected.failures == 0) || printed_fails != (printed.failures > 0))
-    throw std::runtime_error("the proof of case 3 disagrees with the 100-digit sweep");
+  require_proof_agrees(*out.proof, printed, corrected);
   out.evidence.method =
       "100-digit evaluation of xS² + yS + zE, x as printed (s + t + u) and corrected (s − t − u), "
       "on rational S = Q diag(λ) Qᵀ (distinct exact λ, exact Cayley Q) against Q diag(e^λ) Qᵀ";
@@ -118,29 +155,7 @@ Outcome check(const ClaimContext& ctx) {
       {"why",
        "t and u as printed are minus the Lagrange coefficients e^{λ2}/((λ2−λ1)(λ2−λ3)) and "
        "e^{λ3}/((λ3−λ1)(λ3−λ2)); the printed y and z account for that sign, the printed x does not"}};
-  const std::string correction = "x = s − t − u (y, z, s, t, u as printed)";
-  if (printed.failures == 0) {
-    out.verdict = Verdict::confirmed;
-    out.summary = "case 3 as printed gives exp S on every sample";
-  } else if (corrected.failures == 0) {
-    out.verdict = Verdict::corrected;
-    out.summary = "case 3 as printed (x = s + t + u) is wrong on " + std::to_string(printed.failures) + " of " +
-                  std::to_string(printed.samples) + " rational S; with " + correction +
-                  " it gives exp S to 100 digits on all";
-    out.correction = correction;
-  } else {
-    out.verdict = Verdict::refuted;
-    out.summary = "case 3 is wrong as printed and with x = s − t − u";
-  }
-  if (out.verdict != Verdict::confirmed) {
-    const Trial& t = smallest ? *smallest : *printed.first_failure;
-    out.counterexample = counterexample_json(t);
-    const Real100 l1(t.spectrum.lambda(0)), l2(t.spectrum.lambda(1)), l3(t.spectrum.lambda(2));
-    out.counterexample["x_printed"] = static_cast<double>(affinterp::sym3::sd_case3(l1, l2, l3, SdReading::printed).x);
-    out.counterexample["x_corrected"] =
-        static_cast<double>(affinterp::sym3::sd_case3(l1, l2, l3, SdReading::corrected).x);
-    out.counterexample["labelling"] = "λ1, λ2, λ3 = lambda in the order given";
-  }
+  decide(out, printed, corrected);
   return out;
 }
 

@@ -103,8 +103,10 @@ SymbolicInvariants invariants(const proofs::SymbolicMatrix<3, 3>& S) {
 /// With r² = −12p, r³k = −108q (the printed r, k) and w = cos((arccos k + 2πj)/3), 4w³ − 3w = k by the triple angle
 /// (R_θ³ = R_{3θ}), so each printed λ = (r w + tr S)/3 is a root of χ, with multiplicity since z ↦ (r z + tr S)/3 is
 /// affine. Real eigenvalues (spectral theorem) and orthogonal invariance of p, q give the discriminant at diag(m).
-Proof proof(const ClaimContext& ctx) {
-  const GiNaC::symbol a("a"), b("b"), c("c"), d("d"), e("e"), f("f"), z("z"), r("r"), w("w"), k("k");
+/// The four identities above, over symbols: the ideal certificate that the printed λ are roots of χ, p-sos, the
+/// discriminant at the eigenvalues and the triple angle.
+std::vector<proofs::Identity> viete_identities() {
+  const GiNaC::symbol a("a"), b("b"), c("c"), d("d"), e("e"), f("f"), r("r"), w("w"), k("k");
   proofs::SymbolicMatrix<3, 3> S, zE_minus_S;
   S << a, d, e, d, b, f, e, f, c;
   const SymbolicInvariants v = invariants(S);
@@ -120,7 +122,7 @@ Proof proof(const ClaimContext& ctx) {
   const local::Mat2<GiNaC::ex> R = local::rotation<GiNaC::ex>(theta);
   const GiNaC::ex R3 = R.lazyProduct(R).eval().lazyProduct(R).eval()(0, 0), cos_t = GiNaC::cos(theta),
                   sin_t = GiNaC::sin(theta);
-  const std::vector<proofs::Identity> identities = {
+  return {
       {"ideal-certificate",
        "27 χ((r w + tr S)/3) = r³/4 (4w³ − 3w − k) + 3/4 r w (r² + 12p) + 1/4 (r³k + 108q), χ(z) = det(zE − S)",
        27 * chi((r * w + v.trace) / 3),
@@ -134,8 +136,17 @@ Proof proof(const ClaimContext& ctx) {
       {"triple-angle", "(R_θ³)₁₁ = 4cos³θ − 3cosθ − 3cosθ(cos²θ + sin²θ − 1)", R3,
        4 * GiNaC::pow(cos_t, 3) - 3 * cos_t - 3 * cos_t * (cos_t * cos_t + sin_t * sin_t - 1)},
   };
-  // The same facts as sentences, decided by QEPCAD B and Z3: p ≤ 0, p = 0 only for scalar S, and |k| ≤ 1 (as
-  // 4p³ + 27q² ≤ 0) at the eigenvalues.
+}
+
+/// The same facts as sentences, decided by QEPCAD B and Z3: p ≤ 0, p = 0 only for scalar S, and |k| ≤ 1 (as
+/// 4p³ + 27q² ≤ 0) at the eigenvalues.
+std::vector<proofs::Sentence> viete_sentences() {
+  const GiNaC::symbol a("a"), b("b"), c("c"), d("d"), e("e"), f("f"), m1("m1"), m2("m2"), m3("m3");
+  proofs::SymbolicMatrix<3, 3> S;
+  S << a, d, e, d, b, f, e, f, c;
+  proofs::SymbolicMatrix<3, 3> M = proofs::SymbolicMatrix<3, 3>::Zero();
+  M(0, 0) = m1, M(1, 1) = m2, M(2, 2) = m3;
+  const SymbolicInvariants v = invariants(S), diagonal = invariants(M);
   using logic::Polynomial;
   const Polynomial P = proofs::to_polynomial(v.p.expand()), P_diagonal = proofs::to_polynomial(diagonal.p.expand()),
                    Q_diagonal = proofs::to_polynomial(diagonal.q.expand());
@@ -144,7 +155,7 @@ Proof proof(const ClaimContext& ctx) {
                                 logic::equal(entry("d"), 0) && logic::equal(entry("e"), 0) &&
                                 logic::equal(entry("f"), 0);
   const std::vector<std::string> entries = {"a", "b", "c", "d", "e", "f"};
-  const std::vector<proofs::Sentence> sentences = {
+  return {
       {"entries.p-positive", "some symmetric S with p > 0", logic::exists(entries, logic::greater(P, 0)), {}},
       {"entries.p-zero-not-scalar",
        "some symmetric S other than a multiple of E with p = 0",
@@ -156,26 +167,29 @@ Proof proof(const ClaimContext& ctx) {
                      logic::greater(4 * logic::pow(P_diagonal, 3) + 27 * logic::pow(Q_diagonal, 2), 0)),
        {}},
   };
+}
+
+Proof proof(const ClaimContext& ctx) {
   std::vector<ProofSentence> decided;
-  for (const proofs::Sentence& sentence : sentences)
+  for (const proofs::Sentence& sentence : viete_sentences())
     decided.push_back(proofs::prove_sentence(sentence, ctx.proof_files(), {.seconds = 60}));
   return proofs::combined_proof(
       "every real symmetric 3×3 S",
       "identities over symbols from theory/sym3's printed p and q: an ideal certificate that the printed λ are the "
       "roots of the characteristic polynomial when 4w³ − 3w = k, p ≤ 0 as a sum of squares, |k| ≤ 1 from the "
       "discriminant, and the triple angle; sentences: p ≤ 0, p = 0 only at scalar S, |k| ≤ 1",
-      proofs::prove_identities(identities, ctx.proof_files()), std::move(decided));
+      proofs::prove_identities(viete_identities(), ctx.proof_files()), std::move(decided));
 }
 
-Outcome check(const ClaimContext& ctx) {
-  Rng rng(ctx.seed);
-  const int exact_samples = ctx.pick(30, 300), integer_samples = ctx.pick(20, 200);
-  const Real100 resolution(kResolution);
+/// The printed formula against known eigenvalues, case by case: failures (p > 0, |k| > 1 or a λ off by more than
+/// the resolution), the index reading (i in place of k), and NaNs of the formula evaluated in double.
+struct Tally {
   Real100 worst = 0;
   int failures = 0, index_reading_matches = 0, double_nan = 0;
   nlohmann::json first_failure = nullptr;
 
-  auto record = [&](const Mat3Q& S, const std::array<Real100, 3>& truth) {
+  void record(const Mat3Q& S, const std::array<Real100, 3>& truth) {
+    const Real100 resolution(kResolution);
     const Evaluation e = evaluate_printed(S);
     const Real100 d = deviation(e.lambda, truth);
     worst = std::max(worst, d);
@@ -198,23 +212,33 @@ Outcome check(const ClaimContext& ctx) {
     const auto in_double =
         affinterp::sym3::viete_printed_order(S.unaryExpr([](const Rational& x) { return static_cast<double>(x); }));
     if (std::ranges::any_of(in_double, [](double x) { return std::isnan(x); })) ++double_nan;
-  };
+  }
+};
 
-  // Exact spectra: distinct, double and triple eigenvalues in turn.
+/// `exact_samples` rational S with exactly known spectra (distinct, double and triple eigenvalues in turn), then
+/// `integer_samples` small integer matrices against their 100-digit Jacobi eigenvalues.
+Tally tally_printed(Rng& rng, int exact_samples, int integer_samples) {
+  Tally tally;
   for (int i = 0; i < exact_samples; ++i) {
     const Rational a = small_rational(rng, 12, 4), b = small_rational(rng, 12, 4), c = small_rational(rng, 12, 4);
     const Vec3Q lambda = i % 3 == 0 ? Vec3Q(a, b, c) : i % 3 == 1 ? Vec3Q(a, a, c) : Vec3Q(a, a, a);
     const ExactSpectrum e = with_exact_eigenvalues(lambda, small_axis(rng));
-    record(e.S, {Real100(lambda(0)), Real100(lambda(1)), Real100(lambda(2))});
+    tally.record(e.S, {Real100(lambda(0)), Real100(lambda(1)), Real100(lambda(2))});
   }
-  // Small integer matrices, against the 100-digit Jacobi eigenvalues.
   for (int i = 0; i < integer_samples; ++i) {
     Mat3Q S;
     for (int r = 0; r < 3; ++r)
       for (int c = r; c < 3; ++c) S(r, c) = S(c, r) = Rational(rng.integer(-5, 5));
     const auto reference = affinterp::sym3::reference_eigen(affinterp::sym3::to_real100(S)).lambda;
-    record(S, {reference(0), reference(1), reference(2)});
+    tally.record(S, {reference(0), reference(1), reference(2)});
   }
+  return tally;
+}
+
+Outcome check(const ClaimContext& ctx) {
+  Rng rng(ctx.seed);
+  const int exact_samples = ctx.pick(30, 300), integer_samples = ctx.pick(20, 200);
+  const Tally tally = tally_printed(rng, exact_samples, integer_samples);
   // In double on the thesis's own distribution: how often rounding makes the printed formula NaN.
   const auto thesis_matrices = affinterp::sym3::thesis_distribution(ctx.seed, ctx.pick(10000, 1000000));
   const auto thesis_nan = std::ranges::count_if(thesis_matrices, [](const affinterp::sym3::Mat3& S) {
@@ -231,25 +255,25 @@ Outcome check(const ClaimContext& ctx) {
   out.evidence.sample_size = static_cast<std::uint64_t>(total);
   out.evidence.seed = ctx.seed;
   out.evidence.tolerance = std::stod(kResolution);
-  out.evidence.worst_deviation = static_cast<double>(worst);
+  out.evidence.worst_deviation = static_cast<double>(tally.worst);
   out.evidence.details = {
       {"reading_tested",
        "λ1, λ2, λ3 as printed: arccos of the parameter k = −108q/r³, offsets 0, 2π, 4π; p = 0 gives tr S / 3"},
       {"index_reading",
        "with the index i = 1, 2, 3 in place of k: arccos(2), arccos(3) are undefined; λ1 = (r + tr S)/3 "
        "was an eigenvalue in " +
-           std::to_string(index_reading_matches) + " of " + std::to_string(total) +
+           std::to_string(tally.index_reading_matches) + " of " + std::to_string(total) +
            " cases (those with k = 1 or r = 0)"},
       {"exact_spectra", exact_samples},
       {"integer_matrices", integer_samples},
-      {"double_precision_nan_on_exact_spectra", double_nan},
+      {"double_precision_nan_on_exact_spectra", tally.double_nan},
       {"double_precision_nan_on_thesis_distribution",
        std::to_string(thesis_nan) + " of " + std::to_string(thesis_matrices.size())},
       {"double_precision_note",
        "in double the printed formula takes arccos of |k| > 1 (or √ of p > 0) after rounding near repeated "
        "eigenvalues and returns NaN; clamping k to [−1, 1] (viete-clamped) avoids it"}};
   out.proof = proof(ctx);
-  if (failures == 0) {
+  if (tally.failures == 0) {
     out.verdict = Verdict::confirmed;
     out.summary =
         "the printed Viète formula gives the eigenvalues exactly (p ≤ 0 and |k| ≤ 1 exactly; 100-digit "
@@ -260,9 +284,9 @@ Outcome check(const ClaimContext& ctx) {
     weigh_confirmation_against_proof(out, "every real symmetric S");
   } else {
     out.verdict = Verdict::refuted;
-    out.summary = "the printed Viète formula misses the eigenvalues on " + std::to_string(failures) + " of " +
+    out.summary = "the printed Viète formula misses the eigenvalues on " + std::to_string(tally.failures) + " of " +
                   std::to_string(total) + " rational matrices";
-    out.counterexample = first_failure;
+    out.counterexample = tally.first_failure;
   }
   return out;
 }
