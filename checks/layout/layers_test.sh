@@ -9,15 +9,16 @@ cd "$1"
 # include theory/origin, only theory/certified theory/certified: the components on GiNaC and Arb).
 declare -A allowed=(
   [theory]="theory"
-  [reports]="reports"
   [plots]="theory plots"
   [experiments/support]="experiments/support"
   [experiments/inputs]="theory experiments/support experiments/inputs"
   [experiments/bench]="experiments/support experiments/bench"
   [experiments/proofs]="theory experiments/support experiments/proofs"
-  [experiments/claims]="theory reports plots experiments/support experiments/inputs experiments/bench experiments/proofs experiments/claims"
+  [experiments/claims]="theory plots experiments/support experiments/inputs experiments/bench experiments/proofs experiments/claims"
+  [experiments/measurements]="theory plots experiments/support experiments/bench experiments/claims experiments/measurements"
+  [reports]="experiments/support experiments/measurements reports"
   [experiments/python]="theory experiments/support experiments/inputs experiments/proofs experiments/python"
-  [experiments/apps]="theory reports plots experiments/support experiments/inputs experiments/bench experiments/proofs experiments/claims experiments/apps"
+  [experiments/apps]="theory reports plots experiments/support experiments/inputs experiments/bench experiments/proofs experiments/claims experiments/measurements experiments/apps"
 )
 
 failures=0

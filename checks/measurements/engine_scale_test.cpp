@@ -1,6 +1,7 @@
-// The global engine's scale table: read from a Google Benchmark JSON like bench_scale's, judged against the
-// 1M-triangle targets (the largest size at or beyond 1M decides), and drawn as a cost curve.
-#include "experiments/claims/engine_scale.hpp"
+// The global engine's scale record: read from a Google Benchmark JSON like bench_scale's, judged against the
+// 1M-triangle targets (the largest size at or beyond 1M decides), drawn as a cost curve, and written to claims.json
+// under the keys the report reads back.
+#include "experiments/measurements/engine_scale.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,10 +14,20 @@
 
 #include <unistd.h>
 
-namespace affinterp::claims::engine_scale_test {
+namespace affinterp::measurements::engine_scale_test {
 namespace {
 
 namespace fs = std::filesystem;
+using claims::RunSettings;
+
+/// The record of `file` as claims.json holds it (null: no file), read back through from_json to the same JSON.
+nlohmann::json engine_scale_json(const fs::path& file, const RunSettings& settings) {
+  const std::optional<EngineScale> scale = engine_scale(file, settings);
+  if (!scale) return nullptr;
+  const nlohmann::json written = *scale;
+  EXPECT_EQ(nlohmann::json(written.get<EngineScale>()), written) << "read back as written";
+  return written;
+}
 
 nlohmann::json median(const std::string& name, double ms, double peak_MB) {
   return {{"name", name + "/min_time:0.500/repeats:3_median"},
@@ -52,8 +63,10 @@ fs::path write_bench(const nlohmann::json& benchmarks) {
   std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
   name.insert(0, "affinterp_engine_scale_").append(".json");
   const fs::path file = fs::temp_directory_path() / name;
-  std::ofstream(file)
-      << nlohmann::json{{"context", {{"affinterp_cpu", "test cpu"}}}, {"benchmarks", benchmarks}}.dump();
+  std::ofstream(file) << nlohmann::json{
+      {"context", {{"affinterp_cpu", "test cpu"}, {"date", "2026-02-01T10:00:00+00:00"}}},
+      {"benchmarks",
+       benchmarks}}.dump();
   return file;
 }
 
@@ -84,7 +97,7 @@ nlohmann::json two_sizes(const std::vector<nlohmann::json>& small, const std::ve
 TEST(EngineScale, TheLargestSizeBeyondAMillionDecidesTheTargets) {
   const std::vector<nlohmann::json> small = size(261304, 600, 20, 150, 300);
   fs::path file = write_bench(two_sizes(small, size(1045216, 2400, 90, 550, 1900)));
-  nlohmann::json table = engine_scale(file, RunSettings{});
+  nlohmann::json table = engine_scale_json(file, RunSettings{});
   ASSERT_EQ(table["rows"].size(), 2u);
   EXPECT_EQ(table["rows"][0]["triangles"], 261304.0);  // ascending
   EXPECT_EQ(table["rows"][1]["setup_R_ms"], 2880.0);
@@ -102,21 +115,22 @@ TEST(EngineScale, TheLargestSizeBeyondAMillionDecidesTheTargets) {
   EXPECT_EQ(table["rows"][1]["peak_MB_range"], nlohmann::json({1900.0 * 0.98, 1900.0 * 1.02}));
   EXPECT_EQ(table["verdict"], "reproduced");
   EXPECT_EQ(table["machine"], "test cpu");
+  EXPECT_EQ(table["date"], "2026-02-01T10:00:00+00:00") << "the run's date, for the report's \"measured on\"";
   EXPECT_TRUE(table["figures"].empty()) << "no figure without a figure folder";
 
   file = write_bench(two_sizes(small, size(1045216, 3100, 90, 550, 1900)));
-  EXPECT_EQ(engine_scale(file, RunSettings{})["verdict"], "not-reproduced") << "E^R's set-up above 3 s";
+  EXPECT_EQ(engine_scale_json(file, RunSettings{})["verdict"], "not-reproduced") << "E^R's set-up above 3 s";
   file = write_bench(two_sizes(small, size(1045216, 2400, 90, 700, 1900)));
-  EXPECT_EQ(engine_scale(file, RunSettings{})["verdict"], "not-reproduced") << "E^R above 600 ms a batched frame";
+  EXPECT_EQ(engine_scale_json(file, RunSettings{})["verdict"], "not-reproduced") << "E^R above 600 ms a batched frame";
   file = write_bench(two_sizes(size(261304, 600, 20, 100, 300), size(1045216, 2400, 90, 550, 1900)));
-  EXPECT_EQ(engine_scale(file, RunSettings{})["verdict"], "not-reproduced") << "E^R grew 5.5 times";
+  EXPECT_EQ(engine_scale_json(file, RunSettings{})["verdict"], "not-reproduced") << "E^R grew 5.5 times";
   file = write_bench(two_sizes(small, size(1045216, 2400, 90, 550, 2100)));
-  EXPECT_EQ(engine_scale(file, RunSettings{})["verdict"], "not-reproduced") << "peak above 2 GB";
+  EXPECT_EQ(engine_scale_json(file, RunSettings{})["verdict"], "not-reproduced") << "peak above 2 GB";
 
   file = write_bench(size(261304, 700, 20, 150, 300));
-  EXPECT_TRUE(engine_scale(file, RunSettings{})["verdict"].is_null()) << "not measured at 1M";
+  EXPECT_TRUE(engine_scale_json(file, RunSettings{})["verdict"].is_null()) << "not measured at 1M";
   fs::remove(file);
-  EXPECT_TRUE(engine_scale(file, RunSettings{}).is_null());
+  EXPECT_TRUE(engine_scale_json(file, RunSettings{}).is_null());
 }
 
 TEST(EngineScale, EachTargetIsDecidedAloneAndAMissSaysWhereTheTimeGoes) {
@@ -125,7 +139,7 @@ TEST(EngineScale, EachTargetIsDecidedAloneAndAMissSaysWhereTheTimeGoes) {
   for (const char* back_end : {"/simplicial", "/cholmod"})  // whichever the engine picks at 1M
     large.push_back(median("backend_factor/F/1045216" + std::string(back_end), 1200, 0));
   const fs::path file = write_bench(two_sizes(size(261304, 600, 20, 150, 300), large));
-  const nlohmann::json table = engine_scale(file, RunSettings{});
+  const nlohmann::json table = engine_scale_json(file, RunSettings{});
   fs::remove(file);
   EXPECT_EQ(table["verdict"], "not-reproduced");
   const nlohmann::json& verdicts = table["target_verdicts"];
@@ -147,7 +161,7 @@ TEST(EngineScale, EachTargetIsDecidedAloneAndAMissSaysWhereTheTimeGoes) {
 TEST(EngineScale, RunsOnBothSidesOfATargetLeaveItUndecided) {
   // E^F's frame at 1M: 98-102 ms over five runs against 100 ms; the growth 550 / 110 = 5.0, its pairings 4.8-5.2.
   const fs::path file = write_bench(two_sizes(size(261304, 600, 20, 110, 300), size(1045216, 2400, 100, 550, 1900)));
-  const nlohmann::json table = engine_scale(file, RunSettings{});
+  const nlohmann::json table = engine_scale_json(file, RunSettings{});
   fs::remove(file);
   EXPECT_EQ(table["verdict"], "inconclusive");
   for (const auto& v : table["target_verdicts"]) {
@@ -170,7 +184,7 @@ TEST(EngineScale, MediansWithoutTheirRunsDecideNothing) {
     for (const char* benchmark : {"scale_setup/F/", "scale_setup/R/", "scale_frame/F/", "batch_frames/R/"})
       benchmarks.push_back(median(benchmark + std::to_string(triangles), 10, 100));
   const fs::path file = write_bench(benchmarks);
-  const nlohmann::json table = engine_scale(file, RunSettings{});
+  const nlohmann::json table = engine_scale_json(file, RunSettings{});
   fs::remove(file);
   EXPECT_EQ(table["verdict"], "inconclusive");
   EXPECT_TRUE(table["rows"][1]["setup_F_range"].is_null());
@@ -186,7 +200,7 @@ TEST(EngineScale, DrawsTheCostCurve) {
   settings.figure_dir =
       fs::temp_directory_path() / "affinterp_engine_scale_figures" / fs::path(std::to_string(::getpid()));
   fs::create_directories(settings.figure_dir);
-  const nlohmann::json table = engine_scale(file, settings);
+  const nlohmann::json table = engine_scale_json(file, settings);
   fs::remove(file);
   ASSERT_FALSE(table["figures"].empty());
   EXPECT_EQ(table["figures"][0], "figures/engine-scale.png");
@@ -195,4 +209,4 @@ TEST(EngineScale, DrawsTheCostCurve) {
 }
 
 }  // namespace
-}  // namespace affinterp::claims::engine_scale_test
+}  // namespace affinterp::measurements::engine_scale_test

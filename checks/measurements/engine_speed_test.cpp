@@ -1,6 +1,6 @@
 // The global engine's speed table: read from a Google Benchmark JSON like bench_interp's, judged against
 // the targets, and rendered into the report.
-#include "experiments/claims/engine_speed.hpp"
+#include "experiments/measurements/engine_speed.hpp"
 #include "checks/claims/bench_json.hpp"
 #include "reports/generator/report.hpp"
 
@@ -10,10 +10,23 @@
 #include <fstream>
 #include <string>
 
-namespace affinterp::claims::engine_speed_test {
+namespace affinterp::measurements::engine_speed_test {
 namespace {
 
 namespace fs = std::filesystem;
+using namespace claims;  // the benchmark files of bench_json.hpp
+
+/// The record of `file` as claims.json holds it (null: no file), read back through from_json to the same JSON.
+nlohmann::json engine_speed_json(const fs::path& file) {
+  const std::optional<EngineSpeed> record = engine_speed(file);
+  if (!record) return nullptr;
+  const nlohmann::json written = *record;
+  EXPECT_EQ(nlohmann::json(written.get<EngineSpeed>()), written) << "read back as written";
+  return written;
+}
+
+/// REPORT.md of a claims.json document.
+std::string summary(const nlohmann::json& doc) { return report::render(doc).summary; }
 
 /// A file of the running test's own: CTest runs these tests as processes side by side.
 fs::path write_bench(const nlohmann::json& benchmarks) {
@@ -25,7 +38,7 @@ fs::path write_bench(const nlohmann::json& benchmarks) {
   return file;
 }
 
-TEST(EngineSpeed, JudgesIssue19sRaisedTargetsOneFrameAtATimeAndBatched) {
+TEST(EngineSpeed, JudgesTheRaisedTargetsOneFrameAtATimeAndBatched) {
   // E^F: 200 frames/s alone, a batch of 8 in 20 ms (400 frames/s); E^R: 50 alone, 8 in 160 ms (50), its frame's
   // 20 ms made of 4 (assembly), 12 (factorisation) and 2.5 (solve) on 2 threads, E^F's 5 ms of 1.5 (right-hand
   // side) and 3 (solve).
@@ -35,7 +48,7 @@ TEST(EngineSpeed, JudgesIssue19sRaisedTargetsOneFrameAtATimeAndBatched) {
        repeated("frame_assembly/R/mesh", 4.0), repeated("frame_factor/R/mesh", 12.0),
        with_counter(repeated("frame_solve/R/mesh", 2.5), "threads", 2), repeated("frame_rhs/F/mesh", 1.5),
        with_counter(repeated("frame_solve/F/mesh", 3.0), "threads", 2)}));
-  const nlohmann::json table = engine_speed(file);
+  const nlohmann::json table = engine_speed_json(file);
   fs::remove(file);
   ASSERT_EQ(table["rows"].size(), 2u);
   const auto& F = table["rows"][0];
@@ -52,7 +65,7 @@ TEST(EngineSpeed, JudgesIssue19sRaisedTargetsOneFrameAtATimeAndBatched) {
   EXPECT_DOUBLE_EQ(R["frame_parts"]["factor_ms"].get<double>(), 12.0);
   EXPECT_DOUBLE_EQ(R["frame_parts"]["rest_ms"].get<double>(), 1.5);
 
-  const std::string md = report::render_markdown(
+  const std::string md = summary(
       {{"claims", nlohmann::json::array()}, {"environment", nlohmann::json::object()}, {"engine_speed", table}});
   EXPECT_NE(md.find("| F | 300 | 200.0 ("), std::string::npos) << md;
   EXPECT_NE(md.find(") | **no** | 400.0 ("), std::string::npos) << md;
@@ -68,10 +81,10 @@ TEST(EngineSpeed, PartsThatSumPastTheFrameSaySoInsteadOfANegativeRest) {
   const fs::path file = write_bench(concatenated(
       {repeated("setup/R/mesh", 150, 1000), repeated("frame/R/mesh", 20.0), repeated("frame_assembly/R/mesh", 4.0),
        repeated("frame_factor/R/mesh", 15.0), with_counter(repeated("frame_solve/R/mesh", 2.5), "threads", 2)}));
-  const nlohmann::json table = engine_speed(file);
+  const nlohmann::json table = engine_speed_json(file);
   fs::remove(file);
   EXPECT_DOUBLE_EQ(table["rows"][0]["frame_parts"]["rest_ms"].get<double>(), -1.5);
-  const std::string md = report::render_markdown(
+  const std::string md = summary(
       {{"claims", nlohmann::json::array()}, {"environment", nlohmann::json::object()}, {"engine_speed", table}});
   EXPECT_NE(md.find("solve 2.5 ms on 2 threads; timed apart, the parts sum 1.5 ms past the frame's median |"),
             std::string::npos)
@@ -83,7 +96,7 @@ TEST(EngineSpeed, JudgesEachEnergyAgainstItsTargets) {
                                                   repeated("frame_refactor/F/mesh", 100),
                                                   repeated("setup/R/mesh", 250, 1000), repeated("frame/R/mesh", 50.0),
                                                   repeated("setup/S/mesh", 90, 1000), repeated("frame/S/mesh", 60.0)}));
-  const nlohmann::json table = engine_speed(file);
+  const nlohmann::json table = engine_speed_json(file);
   fs::remove(file);
   ASSERT_EQ(table["rows"].size(), 3u);
   EXPECT_EQ(table["mesh"], "mesh");
@@ -103,7 +116,7 @@ TEST(EngineSpeed, JudgesEachEnergyAgainstItsTargets) {
   EXPECT_TRUE(S["target_frames_per_s"].is_null());
   EXPECT_EQ(S["verdict"], "reproduced");
 
-  const std::string md = report::render_markdown(
+  const std::string md = summary(
       {{"claims", nlohmann::json::array()}, {"environment", nlohmann::json::object()}, {"engine_speed", table}});
   EXPECT_NE(md.find("| F | 120.0 | 5.00 | 200.0 ("), std::string::npos) << md;
   EXPECT_NE(md.find(") | 150 | 100.0 | 20.0 | yes |"), std::string::npos) << md;
@@ -114,10 +127,10 @@ TEST(EngineSpeed, AnIntervalAcrossATargetIsUndecided) {
   // 150 frames/s, E^F's target, measured with ±10% spread; and a file with aggregates only.
   const fs::path file =
       write_bench(concatenated({repeated("setup/F/mesh", 120, 1000), repeated("frame/F/mesh", 1000.0 / 150, 0, 0.1)}));
-  const nlohmann::json table = engine_speed(file);
+  const nlohmann::json table = engine_speed_json(file);
   fs::remove(file);
   EXPECT_EQ(table["rows"][0]["verdict"], "inconclusive");
-  const std::string md = report::render_markdown(
+  const std::string md = summary(
       {{"claims", nlohmann::json::array()}, {"environment", nlohmann::json::object()}, {"engine_speed", table}});
   EXPECT_NE(md.find("| undecided |"), std::string::npos) << md;
 
@@ -125,18 +138,18 @@ TEST(EngineSpeed, AnIntervalAcrossATargetIsUndecided) {
   for (const auto& run : concatenated({repeated("setup/F/mesh", 120, 1000), repeated("frame/F/mesh", 5.0)}))
     if (run["run_type"] == "aggregate") aggregates_only.push_back(run);
   const fs::path old_file = write_bench(aggregates_only);
-  const nlohmann::json old_table = engine_speed(old_file);
+  const nlohmann::json old_table = engine_speed_json(old_file);
   fs::remove(old_file);
   EXPECT_EQ(old_table["rows"][0]["verdict"], "inconclusive");
   EXPECT_TRUE(old_table["rows"][0]["frames_per_s_ci95"].is_null());
 }
 
 TEST(EngineSpeed, AbsentBenchmarkIsSaidInTheReport) {
-  EXPECT_TRUE(engine_speed(fs::temp_directory_path() / "affinterp_no_such_bench.json").is_null());
-  const std::string md = report::render_markdown(
+  EXPECT_TRUE(engine_speed_json(fs::temp_directory_path() / "affinterp_no_such_bench.json").is_null());
+  const std::string md = summary(
       {{"claims", nlohmann::json::array()}, {"environment", nlohmann::json::object()}, {"engine_speed", nullptr}});
   EXPECT_NE(md.find("Not measured"), std::string::npos);
 }
 
 }  // namespace
-}  // namespace affinterp::claims::engine_speed_test
+}  // namespace affinterp::measurements::engine_speed_test

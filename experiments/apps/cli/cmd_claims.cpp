@@ -1,12 +1,12 @@
-// `affinterp claims`: run the checks, write claims.json and REPORT.md.
+// `affinterp claims`: run the checks, write claims.json, REPORT.md and a page per claim (claims/).
 #include "experiments/apps/cli/command.hpp"
 #include "experiments/bench/history.hpp"
 #include "experiments/claims/claims_json.hpp"
-#include "experiments/claims/engine_cli.hpp"
-#include "experiments/claims/engine_scale.hpp"
-#include "experiments/claims/engine_speed.hpp"
 #include "experiments/claims/registry.hpp"
 #include "experiments/claims/runner.hpp"
+#include "experiments/measurements/engine_cli.hpp"
+#include "experiments/measurements/engine_scale.hpp"
+#include "experiments/measurements/engine_speed.hpp"
 #include "experiments/support/environment.hpp"
 #include "experiments/support/staged_output.hpp"
 #include "reports/generator/report.hpp"
@@ -54,14 +54,20 @@ void write_file(const fs::path& file, const std::string& text) {
   if (!out) throw CommandFailed("cannot write " + file.string(), 1);
 }
 
+/// A measurement's record as claims.json holds it (null: not measured).
+template <class Record>
+nlohmann::json record_json(const std::optional<Record>& record) {
+  return record ? nlohmann::json(*record) : nlohmann::json();
+}
+
 /// The global engine's speed (the latest run, and every recorded run) and scale, from the benchmark folder.
 EngineTables engine_tables(const RunContext& context) {
+  using namespace affinterp::measurements;
   try {
-    EngineTables tables{engine_speed(context.bench_dir / "bench_interp.json"),
-                        engine_scale(context.bench_dir / "bench_scale.json", context),
-                        engine_cli(context.bench_dir / "bench_cli_scale.json")};
-    if (!tables.speed.is_null()) tables.speed["history"] = engine_speed_by_run(bench::runs_of(context.bench_dir));
-    return tables;
+    std::optional<EngineSpeed> speed = engine_speed(context.bench_dir / "bench_interp.json");
+    if (speed) speed->history = engine_speed_by_run(bench::runs_of(context.bench_dir));
+    return {record_json(speed), record_json(engine_scale(context.bench_dir / "bench_scale.json", context)),
+            record_json(engine_cli(context.bench_dir / "bench_cli_scale.json"))};
   } catch (const std::runtime_error& e) {
     throw CommandFailed(std::string("benchmark outputs: ") + e.what(), 1);
   }
@@ -102,11 +108,12 @@ void run(const ClaimsOptions& options) {
   const fs::path previous_file = fs::path(options.out) / "claims.json";
   const nlohmann::json document = claims_document(registry, results, context, environment_description(),
                                                   read_previous(previous_file), engine_tables(context));
+  const report::Pages pages = report::render(document);
   write_file(staged.staging() / "claims.json", document.dump(2) + "\n");
-  write_file(staged.staging() / "REPORT.md", report::render_markdown(document));
   staged.commit();
+  report::write_pages(pages, options.out);
 
-  std::cerr << "wrote " << previous_file.string() << " and REPORT.md:";
+  std::cerr << "wrote " << previous_file.string() << ", REPORT.md and claims/:";
   for (const auto& [verdict, n] : counts) std::cerr << " " << verdict << " " << n << ";";
   std::cerr << "\n";
 }
@@ -116,7 +123,7 @@ void run(const ClaimsOptions& options) {
 void add_claims_command(CLI::App& app) {
   auto options = std::make_shared<ClaimsOptions>();
   CLI::App* cmd =
-      app.add_subcommand("claims", "Run the checks that decide the papers' claims; write claims.json and REPORT.md.");
+      app.add_subcommand("claims", "Run the checks that decide the papers' claims; write claims.json and the report.");
   cmd->add_option("--only", options->only, "Run only these claim IDs (others keep their earlier entries)");
   cmd->add_flag("--list", options->list, "List the claim IDs and whether each has a check, then exit");
   cmd->add_option("--seed", options->seed, "Seed of every random sample")->capture_default_str();
@@ -126,7 +133,7 @@ void add_claims_command(CLI::App& app) {
   cmd->add_option("--threads", options->threads, "Worker threads for sweeps")
       ->check(CLI::Range(1u, 256u))
       ->capture_default_str();
-  cmd->add_option("--out", options->out, "Folder for claims.json, REPORT.md, figures/ and proofs/")
+  cmd->add_option("--out", options->out, "Folder for claims.json, REPORT.md, claims/, figures/ and proofs/")
       ->capture_default_str();
   cmd->add_option("--bench-dir", options->bench_dir,
                   "Folder of Google Benchmark JSON outputs for the speed claims (default: OUT/bench)");

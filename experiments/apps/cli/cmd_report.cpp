@@ -1,4 +1,4 @@
-// `affinterp report`: render REPORT.md again from claims.json, without rerunning any check.
+// `affinterp report`: render REPORT.md and the claims' pages again from claims.json, without rerunning any check.
 #include "experiments/apps/cli/command.hpp"
 #include "reports/generator/report.hpp"
 
@@ -24,24 +24,31 @@ void run(const ReportOptions& options) {
   const nlohmann::json document = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
   if (document.is_discarded() || !document.contains("claims"))
     throw CommandFailed(options.in + " is not a claims.json document", 1);
-  const fs::path out = options.out.empty() ? fs::path(options.in).parent_path() / "REPORT.md" : fs::path(options.out);
-  const fs::path temporary = fs::path(out.string() + ".tmp");
-  {
-    std::ofstream file(temporary);
-    file << report::render_markdown(document);
-    if (!file) throw CommandFailed("cannot write " + temporary.string(), 1);
+  const fs::path out = options.out.empty() ? fs::absolute(options.in).parent_path() : fs::path(options.out);
+  report::Pages pages;
+  try {
+    pages = report::render(document);
+  } catch (const std::exception& e) {
+    throw CommandFailed(options.in + " is not a claims.json document: " + e.what(), 1);
   }
-  fs::rename(temporary, out);
-  std::cerr << "wrote " << out.string() << "\n";
+  try {
+    fs::create_directories(out);
+    report::write_pages(pages, out);
+  } catch (const std::exception& e) {
+    throw CommandFailed(std::string("cannot write the report: ") + e.what(), 1);
+  }
+  std::cerr << "wrote " << (out / "REPORT.md").string() << " and " << pages.claims.size() << " pages in "
+            << (out / "claims").string() << "\n";
 }
 
 }  // namespace
 
 void add_report_command(CLI::App& app) {
   auto options = std::make_shared<ReportOptions>();
-  CLI::App* cmd = app.add_subcommand("report", "Render REPORT.md from an existing claims.json (no checks run).");
+  CLI::App* cmd =
+      app.add_subcommand("report", "Render REPORT.md and claims/ from an existing claims.json (no checks run).");
   cmd->add_option("--in", options->in, "The claims.json to render")->capture_default_str();
-  cmd->add_option("--out", options->out, "Where to write the report (default: REPORT.md beside --in)");
+  cmd->add_option("--out", options->out, "Folder for REPORT.md and claims/ (default: the folder of --in)");
   cmd->callback([options] { run(*options); });
 }
 

@@ -1,0 +1,143 @@
+#include "reports/generator/summary_page.hpp"
+
+#include "reports/generator/claim_lines.hpp"
+#include "reports/generator/engine_sections.hpp"
+#include "reports/generator/legend.hpp"
+#include "reports/generator/markdown.hpp"
+
+#include <map>
+#include <sstream>
+#include <vector>
+
+namespace affinterp::report {
+namespace {
+
+using nlohmann::json;
+
+/// A record of claims.json (null: not measured), read through its from_json.
+template <class Record>
+std::optional<Record> record(const json& doc, const char* key) {
+  const json entry = doc.value(key, json());
+  return entry.is_null() ? std::nullopt : std::optional(entry.get<Record>());
+}
+
+std::string counts_of(const std::vector<const json*>& claims) {
+  std::map<std::string, int> counts;
+  for (const json* c : claims) ++counts[(*c)["verdict"].get<std::string>()];
+  std::string text;
+  for (const auto& [verdict, n] : counts) text += (text.empty() ? "" : ", ") + verdict + " " + std::to_string(n);
+  return text;
+}
+
+/// A figure and an interactive viewer of the claim, linked from its row.
+std::string figure_link(const json& figures) {
+  std::string link;
+  for (const auto& f : figures) {
+    const std::string path = f.get<std::string>();
+    if (path.ends_with(".png") && link.empty()) link = "[figure](" + path + ")";
+  }
+  for (const auto& f : figures)
+    if (is_viewer(f.get<std::string>()))
+      link += (link.empty() ? "" : " · ") + ("[viewer](" + f.get<std::string>() + ")");
+  return link;
+}
+
+void write_claims_table(std::ostringstream& md, const json& claims) {
+  md << "## Claims\n\nEach ID links to the claim's page: its evidence, tables, proof and figures.\n\n"
+        "| ID | claim | verdict | strength | evidence | figure |\n|---|---|---|---|---|---|\n";
+  for (const auto& c : claims) {
+    const std::string id = c["id"];
+    md << "| [`" << id << "`](" << claim_page_path(id) << ") | " << cell(c["statement"]) << " | **"
+       << c["verdict"].get<std::string>() << "** | " << strength_words(c) << " | "
+       << cell(one_line_evidence(c["evidence"])) << " | " << figure_link(c["figures"]) << " |\n";
+  }
+  md << "\n";
+}
+
+/// One paragraph per group of claims (an area of the papers): its verdicts, then each finding that is not a
+/// confirmation, linked to its claim's page.
+void write_areas(std::ostringstream& md, const json& claims) {
+  std::vector<std::pair<std::string, std::vector<const json*>>> groups;
+  for (const auto& c : claims) {
+    const std::string group = c.value("group", "");
+    if (groups.empty() || groups.back().first != group) groups.push_back({group, {}});
+    groups.back().second.push_back(&c);
+  }
+  md << "## Areas\n\n";
+  for (const auto& [group, members] : groups) {
+    std::vector<const json*> not_confirmed;
+    for (const json* c : members)
+      if ((*c)["verdict"] != "confirmed") not_confirmed.push_back(c);
+    md << "### " << group << "\n\n"
+       << members.size() << " claims: " << counts_of(members) << (not_confirmed.empty() ? "." : "; the others:")
+       << "\n\n";
+    for (const json* c : not_confirmed) {
+      const std::string id = (*c)["id"];
+      md << "- [`" << id << "`](" << claim_page_path(id) << ") **" << (*c)["verdict"].get<std::string>()
+         << "**: " << cell((*c)["summary"].get<std::string>()) << "\n";
+    }
+    md << (not_confirmed.empty() ? "" : "\n");
+  }
+}
+
+/// The engine's area: its targets' verdicts on each record's run, linked to its sections below.
+void write_engine_area(std::ostringstream& md, const std::optional<measurements::EngineSpeed>& speed,
+                       const std::optional<measurements::EngineScale>& scale,
+                       const std::optional<measurements::EngineCli>& cli) {
+  md << "### Global engine speed and scale\n\nMeasurements of the engine, not claims of the papers. ";
+  if (speed) {
+    md << "[Speed](#global-engine-speed) on " << (speed->mesh.empty() ? "?" : speed->mesh) << " ("
+       << measured_on(speed->run) << "), targets met:";
+    for (const auto& row : speed->rows) md << " E^" << row.energy << " " << met_cell(row.verdict) << ";";
+    md << " ";
+  }
+  if (scale)
+    md << "[at scale](#global-engine-at-scale) (" << measured_on(scale->run)
+       << "), the 1M-triangle targets met: " << met_cell(scale->verdict) << "; ";
+  if (cli)
+    md << "[through the CLI](#through-the-cli) (" << measured_on(cli->run) << "), within "
+       << fixed(cli->target_ratio, 1) << "× the engine: " << met_cell(cli->verdict) << ".";
+  md << "\n\n";
+}
+
+void write_environment(std::ostringstream& md, const json& doc) {
+  md << "## How to reproduce\n\n"
+        "From a fresh clone on Debian, `bash experiments/reproduce.sh` installs what is missing, builds, "
+        "runs the benchmarks and writes this report, its claims' pages and `claims.json`. One claim alone: "
+        "`build/bin/affinterp claims --only ID`; with another seed: `--seed N`; the pages again from `claims.json` "
+        "without running any check: `build/bin/affinterp report`.\n\n"
+        "## Environment\n\n| | |\n|---|---|\n";
+  for (const auto& [key, value] : doc["environment"].items())
+    md << "| " << key << " | " << cell(value.is_string() ? value.get<std::string>() : value.dump()) << " |\n";
+  md << "| seed | " << doc.value("seed", 0ull) << " |\n";
+}
+
+}  // namespace
+
+std::string render_summary_page(const json& doc) {
+  const json& claims = doc["claims"];
+  std::vector<const json*> all;
+  for (const auto& c : claims) all.push_back(&c);
+  const auto speed = record<measurements::EngineSpeed>(doc, "engine_speed");
+  const auto scale = record<measurements::EngineScale>(doc, "engine_scale");
+  const auto cli = record<measurements::EngineCli>(doc, "engine_cli");
+  std::ostringstream md;
+  md << "# affinterp report\n\n"
+     << "Which claims of Kaji et al., *Mathematical Analysis on Affine Maps for 2D Shape Interpolation* "
+        "(SCA 2012) and Matsushita, *A Study on 2D Shape Interpolation Using Affine Maps* (thesis, 2015) "
+        "hold, decided by computations this suite runs itself.\n\n"
+     << "Generated " << doc.value("generated_at", "") << " with seed " << doc.value("seed", 0ull) << ", size `"
+     << doc.value("size", "") << "`. Verdicts: " << counts_of(all) << ".\n\n";
+  write_claims_table(md, claims);
+  write_areas(md, claims);
+  write_engine_area(md, speed, scale, cli);
+  write_verdict_legend(md);
+  write_strength_legend(md);
+  write_engine_speed(md, speed);
+  write_engine_scale(md, scale);
+  write_engine_cli(md, cli);
+  write_environment(md, doc);
+  return md.str();
+}
+
+}  // namespace affinterp::report
