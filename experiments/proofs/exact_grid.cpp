@@ -1,9 +1,11 @@
 #include "experiments/proofs/exact_grid.hpp"
 
 #include "experiments/proofs/ginac_polynomial.hpp"
+#include "experiments/proofs/step_nodes.hpp"
 #include "theory/exact/rational.hpp"
 
 #include <algorithm>
+#include <array>
 #include <sstream>
 #include <stdexcept>
 
@@ -13,13 +15,17 @@ namespace {
 using exact::Integer;
 
 /// An expression tree compiled to a postfix program over the fraction pairs (n, d), with a structural bound of
-/// the degree of n and of d in each variable.
+/// the degree of n and of d in each variable. n and d are jets (see Jet below): the bounds hold for each of their
+/// coefficients.
 struct Node {
-  enum class Op { constant, variable, sum, product, power } op = Op::constant;
+  enum class Op { constant, variable, bound, sum, product, power, derivative } op = Op::constant;
   std::vector<std::size_t> children;       ///< earlier nodes
   long exponent = 0;                       ///< power
   Integer numerator = 0, denominator = 1;  ///< constant
   std::size_t variable = 0;                ///< variable
+  std::size_t source = 0;                  ///< bound: the node of the value substituted
+  unsigned slots = 0;                      ///< variable, bound: the derivatives that shift it (bit j: ε_j)
+  unsigned slot = 0;                       ///< derivative: its ε_j
   std::vector<unsigned> numerator_degree, denominator_degree;
   bool denominator_is_one = true;  ///< structurally: d is the constant 1
 };
@@ -44,9 +50,9 @@ class Variables {
   std::vector<std::string> names_;
 };
 
-/// The symbols and functions of `e`, by name.
+/// The symbols and functions of `e`, by name; the steps are looked into, not read as variables.
 void collect(const GiNaC::ex& e, std::map<std::string, GiNaC::ex>& found) {
-  if (GiNaC::is_a<GiNaC::symbol>(e) || GiNaC::is_a<GiNaC::function>(e)) {
+  if (GiNaC::is_a<GiNaC::symbol>(e) || (GiNaC::is_a<GiNaC::function>(e) && step_of(e) == Step::none)) {
     std::ostringstream name;
     name << e;
     found.emplace(name.str(), e);
@@ -61,80 +67,292 @@ Integer to_integer(const GiNaC::numeric& n) {
   return Integer(text.str());
 }
 
+/// The derivatives nested in one side, at most: each nesting level is one ε_j of the jets.
+constexpr unsigned max_derivative_depth = 2;
+
 class Program {
  public:
   Program(const GiNaC::ex& e, Variables& variables) : variables_(variables) { root_ = compile(e); }
   const std::vector<Node>& nodes() const { return nodes_; }
   std::size_t root() const { return root_; }
+  /// The jets' number of coefficients, 2^(deepest nesting of derivatives).
+  unsigned jet_size() const { return 1u << depth_used_; }
 
  private:
+  /// An open derivative d/dx (its ε slot) or substitution x = value, from the root down to the node compiled.
+  struct Scope {
+    bool derivative;
+    std::size_t variable;
+    unsigned slot = 0;      ///< derivative
+    std::size_t value = 0;  ///< substitution
+  };
+
   std::size_t push(Node node) {
     nodes_.push_back(std::move(node));
     return nodes_.size() - 1;
   }
   std::vector<unsigned> zeros() const { return std::vector<unsigned>(variables_.size(), 0); }
+  unsigned derivative_depth() const {
+    return static_cast<unsigned>(std::count_if(scopes_.begin(), scopes_.end(), [](const Scope& s) { return s.derivative; }));
+  }
 
-  std::size_t compile(const GiNaC::ex& e) {
+  std::size_t constant(const Integer& numerator, const Integer& denominator) {
     Node node;
     node.numerator_degree = node.denominator_degree = zeros();
-    if (GiNaC::is_a<GiNaC::numeric>(e)) {
-      const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
-      if (!n.is_rational()) throw std::invalid_argument("grid check: not a rational number: " + text_of(e));
-      node.numerator = to_integer(n.numer());
-      node.denominator = to_integer(n.denom());
-      node.denominator_is_one = node.denominator == 1;
-      return push(std::move(node));
+    node.numerator = numerator;
+    node.denominator = denominator;
+    node.denominator_is_one = denominator == 1;
+    return push(std::move(node));
+  }
+
+  /// A sum or product of earlier nodes. Degrees follow the evaluation below: (n1 d2 + n2 d1) / (d1 d2) for a sum,
+  /// (n1 n2) / (d1 d2) for a product.
+  std::size_t combine(Node::Op op, std::vector<std::size_t> children) {
+    Node node;
+    node.op = op;
+    node.children = std::move(children);
+    const Node& first = nodes_[node.children.front()];
+    node.numerator_degree = first.numerator_degree;
+    node.denominator_degree = first.denominator_degree;
+    node.denominator_is_one = first.denominator_is_one;
+    for (std::size_t k = 1; k < node.children.size(); ++k) {
+      const Node& c = nodes_[node.children[k]];
+      for (std::size_t v = 0; v < variables_.size(); ++v) {
+        if (op == Node::Op::sum)
+          node.numerator_degree[v] = std::max(node.numerator_degree[v] + c.denominator_degree[v],
+                                              c.numerator_degree[v] + node.denominator_degree[v]);
+        else
+          node.numerator_degree[v] += c.numerator_degree[v];
+        node.denominator_degree[v] += c.denominator_degree[v];
+      }
+      node.denominator_is_one = node.denominator_is_one && c.denominator_is_one;
     }
-    if (GiNaC::is_a<GiNaC::symbol>(e) || GiNaC::is_a<GiNaC::function>(e)) {
-      node.op = Node::Op::variable;
-      node.variable = variables_.index(e);
+    return push(std::move(node));
+  }
+
+  /// A symbol: the grid's coordinate, or the value of the innermost substitution of it; shifted by ε_j for each
+  /// derivative d/dx between that and here (dual numbers: f(x + ε) = f(x) + ε f'(x)).
+  std::size_t leaf(const GiNaC::ex& e) {
+    Node node;
+    node.variable = variables_.index(e);
+    node.op = Node::Op::variable;
+    for (auto s = scopes_.rbegin(); s != scopes_.rend(); ++s) {
+      if (s->variable != node.variable) continue;
+      if (s->derivative) {
+        node.slots |= 1u << s->slot;
+        continue;
+      }
+      node.op = Node::Op::bound;
+      node.source = s->value;
+      break;
+    }
+    if (node.op == Node::Op::variable) {
+      node.numerator_degree = node.denominator_degree = zeros();
       node.numerator_degree[node.variable] = 1;
       return push(std::move(node));
     }
-    if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
-      const bool sum = GiNaC::is_a<GiNaC::add>(e);
-      node.op = sum ? Node::Op::sum : Node::Op::product;
-      for (std::size_t i = 0; i < e.nops(); ++i) node.children.push_back(compile(e.op(i)));
-      // Degrees follow the evaluation below: (n1 d2 + n2 d1) / (d1 d2) for a sum, (n1 n2) / (d1 d2) for a product.
-      const Node& first = nodes_[node.children.front()];
-      node.numerator_degree = first.numerator_degree;
-      node.denominator_degree = first.denominator_degree;
-      node.denominator_is_one = first.denominator_is_one;
-      for (std::size_t k = 1; k < node.children.size(); ++k) {
-        const Node& c = nodes_[node.children[k]];
-        for (std::size_t v = 0; v < variables_.size(); ++v) {
-          if (sum)
-            node.numerator_degree[v] = std::max(node.numerator_degree[v] + c.denominator_degree[v],
-                                                c.numerator_degree[v] + node.denominator_degree[v]);
-          else
-            node.numerator_degree[v] += c.numerator_degree[v];
-          node.denominator_degree[v] += c.denominator_degree[v];
-        }
-        node.denominator_is_one = node.denominator_is_one && c.denominator_is_one;
-      }
-      return push(std::move(node));
-    }
-    if (GiNaC::is_a<GiNaC::power>(e)) {
-      const GiNaC::ex exponent = e.op(1);
-      if (!GiNaC::is_a<GiNaC::numeric>(exponent) || !GiNaC::ex_to<GiNaC::numeric>(exponent).is_integer())
-        throw std::invalid_argument("grid check: not an integer power: " + text_of(e));
-      node.op = Node::Op::power;
-      node.exponent = GiNaC::ex_to<GiNaC::numeric>(exponent).to_long();
-      node.children.push_back(compile(e.op(0)));
-      const Node& base = nodes_[node.children.front()];
-      const unsigned n = static_cast<unsigned>(node.exponent < 0 ? -node.exponent : node.exponent);
+    // (n + ε d)/d: each coefficient of the numerator is bounded by n's or d's bound.
+    const Node& value = nodes_[node.source];
+    node.numerator_degree = value.numerator_degree;
+    node.denominator_degree = value.denominator_degree;
+    node.denominator_is_one = value.denominator_is_one;
+    if (node.slots != 0)
+      for (std::size_t v = 0; v < variables_.size(); ++v)
+        node.numerator_degree[v] = std::max(node.numerator_degree[v], node.denominator_degree[v]);
+    return push(std::move(node));
+  }
+
+  /// A function such as cos(φ + tβ) is an independent variable; a step on a symbol of its argument is refused
+  /// (the checker has no rules for the function's derivative or for identifying cos(φ + 0β) with cos(φ)).
+  std::size_t function_leaf(const GiNaC::ex& e) {
+    const std::map<std::string, GiNaC::ex> symbols = symbols_of(e);
+    for (const Scope& s : scopes_)
+      if (symbols.count(variables_.names()[s.variable]))
+        throw std::invalid_argument("grid check: a step on " + variables_.names()[s.variable] + " inside " +
+                                    text_of(e));
+    Node node;
+    node.op = Node::Op::variable;
+    node.variable = variables_.index(e);
+    node.numerator_degree = node.denominator_degree = zeros();
+    node.numerator_degree[node.variable] = 1;
+    return push(std::move(node));
+  }
+
+  static std::map<std::string, GiNaC::ex> symbols_of(const GiNaC::ex& e) {
+    std::map<std::string, GiNaC::ex> found;
+    for (std::size_t i = 0; i < e.nops(); ++i) collect(e.op(i), found);
+    return found;
+  }
+
+  /// d/dx of the child, the quotient rule on its jets: (n/d)' = (n' d − n d')/d². Degree bounds: n' d − n d' is
+  /// bounded by deg n + deg d, less one in x when every dependence on the grid's x inside passes through ε_j
+  /// (x free here, and no open substitution brings x in by its value): then n' = ∂n/∂x lowers the degree in x.
+  std::size_t derivative(const GiNaC::ex& e) {
+    if (!GiNaC::is_a<GiNaC::symbol>(e.op(1))) throw std::invalid_argument("grid check: d/d of a non-symbol");
+    const unsigned depth = derivative_depth();
+    if (depth >= max_derivative_depth)
+      throw std::invalid_argument("grid check: derivatives nested deeper than " +
+                                  std::to_string(max_derivative_depth));
+    depth_used_ = std::max(depth_used_, depth + 1);
+    const std::size_t x = variables_.index(e.op(1));
+    bool lowers = true;
+    for (const Scope& s : scopes_)
+      if (!s.derivative && (s.variable == x || nodes_[s.value].numerator_degree[x] > 0 ||
+                            nodes_[s.value].denominator_degree[x] > 0))
+        lowers = false;
+    scopes_.push_back({true, x, depth, 0});
+    const std::size_t child = compile(e.op(0));
+    scopes_.pop_back();
+
+    const Node& c = nodes_[child];
+    Node node;
+    node.op = Node::Op::derivative;
+    node.children = {child};
+    node.slot = depth;
+    node.denominator_is_one = c.denominator_is_one;
+    node.numerator_degree = c.numerator_degree;
+    node.denominator_degree = c.denominator_degree;
+    if (!c.denominator_is_one)
       for (std::size_t v = 0; v < variables_.size(); ++v) {
-        node.numerator_degree[v] = n * (node.exponent < 0 ? base.denominator_degree[v] : base.numerator_degree[v]);
-        node.denominator_degree[v] = n * (node.exponent < 0 ? base.numerator_degree[v] : base.denominator_degree[v]);
+        node.numerator_degree[v] += c.denominator_degree[v];
+        node.denominator_degree[v] *= 2;
       }
-      node.denominator_is_one = node.exponent >= 0 ? base.denominator_is_one : false;
-      return push(std::move(node));
+    if (lowers && node.numerator_degree[x] > 0) --node.numerator_degree[x];
+    return push(std::move(node));
+  }
+
+  /// e with x = v: v compiled here, then e with x bound to it.
+  std::size_t substitution(const GiNaC::ex& e) {
+    const GiNaC::ex x = e.op(1).op(0);
+    if (!GiNaC::is_a<GiNaC::lst>(e.op(1)) || e.op(1).nops() != 1 || !GiNaC::is_a<GiNaC::symbol>(x) ||
+        !GiNaC::is_a<GiNaC::lst>(e.op(2)) || e.op(2).nops() != 1)
+      throw std::invalid_argument("grid check: a substitution not of one symbol");
+    const std::size_t value = compile(e.op(2).op(0));
+    scopes_.push_back({false, variables_.index(x), 0, value});
+    const std::size_t result = compile(e.op(0));
+    scopes_.pop_back();
+    return result;
+  }
+
+  /// A matrix of nodes, row by row.
+  struct MatrixNodes {
+    unsigned rows = 0, cols = 0;
+    std::vector<std::size_t> entries;
+    std::size_t at(unsigned i, unsigned j) const { return entries[i * cols + j]; }
+  };
+
+  MatrixNodes compile_matrix(const GiNaC::ex& e) {
+    MatrixNodes m;
+    if (GiNaC::is_a<GiNaC::matrix>(e)) {
+      const GiNaC::matrix& M = GiNaC::ex_to<GiNaC::matrix>(e);
+      m.rows = M.rows(), m.cols = M.cols();
+      for (std::size_t k = 0; k < M.nops(); ++k) m.entries.push_back(compile(M.op(k)));
+      return m;
     }
+    if (step_of(e) == Step::transpose) {
+      const MatrixNodes a = compile_matrix(e.op(0));
+      m.rows = a.cols, m.cols = a.rows;
+      for (unsigned i = 0; i < m.rows; ++i)
+        for (unsigned j = 0; j < m.cols; ++j) m.entries.push_back(a.at(j, i));
+      return m;
+    }
+    if (step_of(e) == Step::product) {
+      const MatrixNodes a = compile_matrix(e.op(0)), b = compile_matrix(e.op(1));
+      if (a.cols != b.rows) throw std::invalid_argument("grid check: a product of matrices that do not fit");
+      m.rows = a.rows, m.cols = b.cols;
+      for (unsigned i = 0; i < m.rows; ++i)
+        for (unsigned j = 0; j < m.cols; ++j) {
+          std::vector<std::size_t> terms;  // (AB)_ij = Σ_k A_ik B_kj
+          for (unsigned k = 0; k < a.cols; ++k) terms.push_back(combine(Node::Op::product, {a.at(i, k), b.at(k, j)}));
+          m.entries.push_back(combine(Node::Op::sum, terms));
+        }
+      return m;
+    }
+    throw std::invalid_argument("grid check: not a matrix: " + text_of(e));
+  }
+
+  /// det M = Σ_σ sgn σ Π_i M_{i σ(i)} (Leibniz), for a square matrix of at most 4 rows.
+  std::size_t determinant(const GiNaC::ex& e) {
+    const MatrixNodes m = compile_matrix(e.op(0));
+    if (m.rows != m.cols || m.rows == 0 || m.rows > 4)
+      throw std::invalid_argument("grid check: determinant of a matrix not square of at most 4 rows");
+    std::vector<unsigned> sigma(m.rows);
+    for (unsigned i = 0; i < m.rows; ++i) sigma[i] = i;
+    const std::size_t minus_one = constant(-1, 1);
+    std::vector<std::size_t> terms;
+    do {
+      unsigned inversions = 0;
+      for (unsigned i = 0; i < m.rows; ++i)
+        for (unsigned j = i + 1; j < m.rows; ++j) inversions += sigma[i] > sigma[j];
+      std::vector<std::size_t> factors;
+      if (inversions % 2 == 1) factors.push_back(minus_one);
+      for (unsigned i = 0; i < m.rows; ++i) factors.push_back(m.at(i, sigma[i]));
+      terms.push_back(combine(Node::Op::product, factors));
+    } while (std::next_permutation(sigma.begin(), sigma.end()));
+    return combine(Node::Op::sum, terms);
+  }
+
+  std::size_t compile(const GiNaC::ex& e) {
+    switch (step_of(e)) {
+      case Step::derivative:
+        return derivative(e);
+      case Step::substitution:
+        return substitution(e);
+      case Step::determinant:
+        return determinant(e);
+      case Step::entry: {
+        const MatrixNodes m = compile_matrix(e.op(0));
+        const GiNaC::ex k = e.op(1);
+        if (!GiNaC::is_a<GiNaC::numeric>(k) || !GiNaC::ex_to<GiNaC::numeric>(k).is_nonneg_integer() ||
+            GiNaC::ex_to<GiNaC::numeric>(k).to_long() >= static_cast<long>(m.entries.size()))
+          throw std::invalid_argument("grid check: entry out of range: " + text_of(e));
+        return m.entries[GiNaC::ex_to<GiNaC::numeric>(k).to_long()];
+      }
+      case Step::transpose:
+      case Step::product:
+        throw std::invalid_argument("grid check: a matrix where a scalar is expected: " + text_of(e));
+      case Step::none:
+        break;
+    }
+    if (GiNaC::is_a<GiNaC::numeric>(e)) {
+      const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
+      if (!n.is_rational()) throw std::invalid_argument("grid check: not a rational number: " + text_of(e));
+      return constant(to_integer(n.numer()), to_integer(n.denom()));
+    }
+    if (GiNaC::is_a<GiNaC::symbol>(e)) return leaf(e);
+    if (GiNaC::is_a<GiNaC::function>(e)) return function_leaf(e);
+    if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
+      std::vector<std::size_t> children;
+      for (std::size_t i = 0; i < e.nops(); ++i) children.push_back(compile(e.op(i)));
+      return combine(GiNaC::is_a<GiNaC::add>(e) ? Node::Op::sum : Node::Op::product, std::move(children));
+    }
+    if (GiNaC::is_a<GiNaC::power>(e)) return power(e);
     throw std::invalid_argument("grid check: not a rational expression: " + text_of(e));
+  }
+
+  std::size_t power(const GiNaC::ex& e) {
+    const GiNaC::ex exponent = e.op(1);
+    if (!GiNaC::is_a<GiNaC::numeric>(exponent) || !GiNaC::ex_to<GiNaC::numeric>(exponent).is_integer())
+      throw std::invalid_argument("grid check: not an integer power: " + text_of(e));
+    Node node;
+    node.op = Node::Op::power;
+    node.exponent = GiNaC::ex_to<GiNaC::numeric>(exponent).to_long();
+    node.children.push_back(compile(e.op(0)));
+    const Node& base = nodes_[node.children.front()];
+    const unsigned n = static_cast<unsigned>(node.exponent < 0 ? -node.exponent : node.exponent);
+    node.numerator_degree = node.denominator_degree = zeros();
+    for (std::size_t v = 0; v < variables_.size(); ++v) {
+      node.numerator_degree[v] = n * (node.exponent < 0 ? base.denominator_degree[v] : base.numerator_degree[v]);
+      node.denominator_degree[v] = n * (node.exponent < 0 ? base.numerator_degree[v] : base.denominator_degree[v]);
+    }
+    node.denominator_is_one = node.exponent >= 0 ? base.denominator_is_one : false;
+    return push(std::move(node));
   }
 
   Variables& variables_;
   std::vector<Node> nodes_;
+  std::vector<Scope> scopes_;
+  unsigned depth_used_ = 0;
   std::size_t root_ = 0;
 };
 
@@ -164,46 +382,123 @@ Int from_integer(const Integer& n) {
   }
 }
 
+/// A value and its derivatives along the nested steps d/dx: a polynomial in ε_0, ε_1 with ε_j² = 0, coefficient m
+/// the one of Π_{j in m} ε_j (hyper-dual numbers). Integer coefficients: exact like the values.
+template <class Int>
+struct Jet {
+  std::array<Int, 1u << max_derivative_depth> c{};
+  unsigned size = 1;
+};
+
+template <class Int>
+Jet<Int> jet(const Int& value, unsigned size) {
+  Jet<Int> j;
+  j.size = size;
+  j.c[0] = value;
+  return j;
+}
+template <class Int>
+Jet<Int> add(const Jet<Int>& a, const Jet<Int>& b) {
+  Jet<Int> r = a;
+  for (unsigned m = 0; m < r.size; ++m) r.c[m] = add(a.c[m], b.c[m]);
+  return r;
+}
+template <class Int>
+Jet<Int> negate(const Jet<Int>& a) {
+  Jet<Int> r = a;
+  for (unsigned m = 0; m < r.size; ++m) r.c[m] = mul(a.c[m], Int(-1));
+  return r;
+}
+/// (a b)_m = Σ_{s ⊆ m} a_s b_{m∖s}.
+template <class Int>
+Jet<Int> mul(const Jet<Int>& a, const Jet<Int>& b) {
+  Jet<Int> r = jet(Int(0), a.size);
+  for (unsigned m = 0; m < a.size; ++m)
+    for (unsigned s = m;; s = (s - 1) & m) {
+      r.c[m] = add(r.c[m], mul(a.c[s], b.c[m ^ s]));
+      if (s == 0) break;
+    }
+  return r;
+}
+/// ε_j a.
+template <class Int>
+Jet<Int> shift(const Jet<Int>& a, unsigned j) {
+  Jet<Int> r = jet(Int(0), a.size);
+  for (unsigned m = 0; m < a.size; ++m)
+    if (m & (1u << j)) r.c[m] = a.c[m ^ (1u << j)];
+  return r;
+}
+/// The parts of a without ε_j and at ε_j: a = a0 + ε_j a1.
+template <class Int>
+std::pair<Jet<Int>, Jet<Int>> split(const Jet<Int>& a, unsigned j) {
+  Jet<Int> a0 = jet(Int(0), a.size), a1 = jet(Int(0), a.size);
+  for (unsigned m = 0; m < a.size; ++m)
+    if (!(m & (1u << j))) a0.c[m] = a.c[m], a1.c[m] = a.c[m | (1u << j)];
+  return {a0, a1};
+}
+
 template <class Int>
 struct Fraction {
-  Int n, d;
+  Jet<Int> n, d;
 };
+
+template <class Int>
+Fraction<Int> combine(const Node& node, const std::vector<Node>& nodes, const std::vector<Fraction<Int>>& values) {
+  Fraction<Int> value = values[node.children.front()];
+  for (std::size_t k = 1; k < node.children.size(); ++k) {
+    const Fraction<Int>& c = values[node.children[k]];
+    if (node.op == Node::Op::product)
+      value = {mul(value.n, c.n), mul(value.d, c.d)};
+    else if (nodes[node.children[k]].denominator_is_one)
+      value = {add(value.n, mul(c.n, value.d)), value.d};
+    else
+      value = {add(mul(value.n, c.d), mul(c.n, value.d)), mul(value.d, c.d)};
+  }
+  return value;
+}
 
 /// The fraction (n, d) of the program's root at the integer point `at`, without cancelling.
 template <class Int>
 Fraction<Int> evaluate(const Program& program, const std::vector<unsigned>& at, std::vector<Fraction<Int>>& values) {
   const std::vector<Node>& nodes = program.nodes();
+  const unsigned size = program.jet_size();
   values.resize(nodes.size());
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     const Node& node = nodes[i];
     Fraction<Int>& value = values[i];
     switch (node.op) {
       case Node::Op::constant:
-        value = {from_integer<Int>(node.numerator), from_integer<Int>(node.denominator)};
+        value = {jet(from_integer<Int>(node.numerator), size), jet(from_integer<Int>(node.denominator), size)};
         break;
       case Node::Op::variable:
-        value = {Int(at[node.variable]), Int(1)};
-        break;
-      case Node::Op::sum:
-      case Node::Op::product: {
-        value = values[node.children.front()];
-        for (std::size_t k = 1; k < node.children.size(); ++k) {
-          const Fraction<Int>& c = values[node.children[k]];
-          if (node.op == Node::Op::product)
-            value = {mul(value.n, c.n), mul(value.d, c.d)};
-          else if (nodes[node.children[k]].denominator_is_one)
-            value = {add(value.n, mul(c.n, value.d)), value.d};
-          else
-            value = {add(mul(value.n, c.d), mul(c.n, value.d)), mul(value.d, c.d)};
-        }
+      case Node::Op::bound: {
+        value = node.op == Node::Op::bound ? values[node.source]
+                                           : Fraction<Int>{jet(Int(at[node.variable]), size), jet(Int(1), size)};
+        const Jet<Int> d = value.d;  // x + ε_j: (n + ε_j d)/d
+        for (unsigned j = 0; j < max_derivative_depth; ++j)
+          if (node.slots & (1u << j)) value.n = add(value.n, shift(d, j));
         break;
       }
+      case Node::Op::sum:
+      case Node::Op::product:
+        value = combine(node, nodes, values);
+        break;
       case Node::Op::power: {
         const Fraction<Int>& base = values[node.children.front()];
-        Fraction<Int> p{Int(1), Int(1)};
+        Fraction<Int> p{jet(Int(1), size), jet(Int(1), size)};
         for (long k = 0; k < (node.exponent < 0 ? -node.exponent : node.exponent); ++k)
           p = {mul(p.n, base.n), mul(p.d, base.d)};
         value = node.exponent < 0 ? Fraction<Int>{p.d, p.n} : p;
+        break;
+      }
+      case Node::Op::derivative: {
+        const Fraction<Int>& c = values[node.children.front()];
+        const auto [n0, n1] = split(c.n, node.slot);
+        const auto [d0, d1] = split(c.d, node.slot);
+        if (nodes[node.children.front()].denominator_is_one)
+          value = {n1, d0};
+        else
+          value = {add(mul(n1, d0), negate(mul(n0, d1))), mul(d0, d0)};
         break;
       }
     }
@@ -230,11 +525,15 @@ struct EntryCheck {
         return fast_values;
     }
     ();
-    const Fraction<Int> l = evaluate<Int>(lhs, at, values), r = evaluate<Int>(rhs, at, values);
-    lhs_denominator_seen_nonzero = lhs_denominator_seen_nonzero || l.d != Int(0);
-    rhs_denominator_seen_nonzero = rhs_denominator_seen_nonzero || r.d != Int(0);
-    defined_here = l.d != Int(0) && r.d != Int(0);
-    return add(mul(l.n, r.d), -mul(r.n, l.d));
+    // The values proper: the jets' coefficients without ε.
+    const Fraction<Int> l = evaluate<Int>(lhs, at, values);
+    const Int ln = l.n.c[0], ld = l.d.c[0];
+    const Fraction<Int> r = evaluate<Int>(rhs, at, values);
+    const Int rn = r.n.c[0], rd = r.d.c[0];
+    lhs_denominator_seen_nonzero = lhs_denominator_seen_nonzero || ld != Int(0);
+    rhs_denominator_seen_nonzero = rhs_denominator_seen_nonzero || rd != Int(0);
+    defined_here = ld != Int(0) && rd != Int(0);
+    return add(mul(ln, rd), -mul(rn, ld));
   }
 };
 

@@ -9,10 +9,26 @@
 // Comput. 8 (1999), Lemma 2.1; induction on the variables, a nonzero univariate polynomial of degree ≤ d having
 // at most d roots). So N vanishing on the grid proves lhs = rhs wherever both sides are defined, provided
 // neither denominator is the zero polynomial, which the grid shows too.
+//
+// The steps an identity carries (step_nodes.hpp) are performed here, on the same fractions:
+//   derivative d/dx e    dual numbers: every value is a jet a_0 + Σ a_m ε^m in ε_0, ε_1 (ε_j² = 0, one ε per
+//                        nesting level of derivatives), the symbol x inside d/dx evaluated as x + ε_j; the sums,
+//                        products and powers above then carry the exact derivatives of n and d (product rule), and
+//                        d/dx (n/d) = (n' d − n d')/d² (quotient rule). Bounds: each bound holds for every
+//                        coefficient of a jet; deg(n' d − n d') ≤ deg n + deg d, less one in x when x is a grid
+//                        variable there (then n' = ∂n/∂x); the denominator d² has twice d's bound.
+//   substitution e|x=v   v evaluated as a fraction where the substitution stands, and x inside e read as v (with
+//                        its n and d bounds in place of x's degree 1); x is then no grid variable inside e.
+//   matrices             a product's entries are the sums Σ_k A_ik B_kj of products of the factors' entries, a
+//                        transpose swaps indices, a determinant (at most 4 × 4) is Leibniz's signed sum
+//                        Σ_σ sgn σ Π_i M_iσ(i): sums and products of fractions, bounded as above.
+// Each is exact polynomial arithmetic on n and d, so N stays a polynomial whose degrees the bounds dominate and
+// Alon's lemma applies as before. A step on a symbol inside a function (d/dt cos(φ + tβ)) is refused: the grid has
+// no rule for the function's derivative, nor for identifying cos(φ + 0·β) with cos(φ).
 // What it shares with GiNaC is the tree: GiNaC's constructors flatten sums and products, collect numeric
 // coefficients of equal terms and combine equal factors (x·x⁻¹ = 1), but never expand a product or a power of a
-// sum and never cancel a common factor that is not literally equal. The two sides are read separately, so nothing
-// cancels between them before the grid evaluates N.
+// sum and never cancel a common factor that is not literally equal; they perform none of the steps. The two
+// sides are read separately, so nothing cancels between them before the grid evaluates N.
 #include <ginac/ginac.h>
 
 #include <cstdint>
@@ -33,10 +49,11 @@ struct GridVerdict {
   std::string witness_value;
 };
 
-/// Decides lhs = rhs (scalars, or matrices of the same shape entry by entry) on the grid. Throws
-/// std::invalid_argument on an expression that is not rational in its variables (a non-integer power or a
-/// non-rational number), on a grid of more than `max_points` points, and on a denominator that is the zero
-/// polynomial.
+/// Decides lhs = rhs (scalars, or matrices of the same shape entry by entry) on the grid, performing their steps.
+/// Throws std::invalid_argument on an expression that is not rational in its variables (a non-integer power or a
+/// non-rational number), on a step it cannot perform (derivatives nested more than twice, a step on a symbol
+/// inside a function, a determinant larger than 4 × 4), on a grid of more than `max_points` points, and on a
+/// denominator that is the zero polynomial.
 GridVerdict grid_check(const GiNaC::ex& lhs, const GiNaC::ex& rhs, std::uint64_t max_points = 20'000'000);
 
 /// The verdict as the lines of a <name>.grid.out file: the lemma, the bounds, the grid and the result.

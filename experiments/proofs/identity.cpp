@@ -2,6 +2,7 @@
 
 #include "experiments/proofs/exact_grid.hpp"
 #include "experiments/proofs/ginac_polynomial.hpp"
+#include "experiments/proofs/step_nodes.hpp"
 
 #include <chrono>
 #include <fstream>
@@ -18,13 +19,17 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-/// The entries of a side: the matrix's entries row by row, or the scalar itself.
+/// The entries of a side: a matrix's entries row by row, a matrix-valued step's entries as entry nodes (each line
+/// of the script then performs the step), or the scalar itself.
 std::vector<GiNaC::ex> entries(const GiNaC::ex& side) {
   std::vector<GiNaC::ex> list;
-  if (GiNaC::is_a<GiNaC::matrix>(side))
+  if (GiNaC::is_a<GiNaC::matrix>(side)) {
     for (std::size_t i = 0; i < side.nops(); ++i) list.push_back(side.op(i));
-  else
-    list.push_back(side);
+    return list;
+  }
+  const auto [rows, cols] = shape(side);
+  if (rows == 0) return {side};
+  for (unsigned k = 0; k < rows * cols; ++k) list.push_back(entry(side, k));
   return list;
 }
 
@@ -59,7 +64,6 @@ Script write_script(const std::string& id, const Identity& identity) {
   collect_symbols(identity.rhs, by_name);
   GiNaC::symtab table;
   for (const auto& [name, symbol] : by_name) table[name] = symbol;
-  GiNaC::parser read(table, /*strict=*/true);
 
   Script script;
   std::ostringstream text;
@@ -68,7 +72,7 @@ Script write_script(const std::string& id, const Identity& identity) {
   for (std::size_t i = 0; i < left.size(); ++i) {
     const std::string l = text_of(left[i]), r = text_of(right[i]);
     text << "is(normal((" << l << ")-(" << r << "))==0);\n";
-    script.sides.emplace_back(read(l), read(r));
+    script.sides.emplace_back(read_script_expression(l, table), read_script_expression(r, table));
   }
   script.text = text.str();
   return script;
@@ -91,12 +95,13 @@ ProofSentence prove_identity(const Identity& identity, const SentenceFiles& file
     write_file(files.dir / (identity.name + ".ginsh"), script.text);
   }
 
-  // Checker 1: GiNaC's normal form of each difference.
+  // Checker 1: GiNaC performs the steps (diff, subs, evalm, determinant) on a copy, then the normal form of each
+  // difference.
   auto start = Clock::now();
   bool ginac_zero = true;
   std::string answers;
   for (const auto& [l, r] : script.sides) {
-    const bool zero = (l - r).normal().is_zero();
+    const bool zero = (perform_steps(l) - perform_steps(r)).normal().is_zero();
     ginac_zero = ginac_zero && zero;
     answers += zero ? "1\n" : "0\n";
   }

@@ -1,13 +1,16 @@
 #pragma once
 // Polynomial and rational identities as parts of a proof: lhs = rhs for all values of the symbols
 // where both sides are defined, decided by two independent checkers,
-//   ginac       GiNaC's normal() of lhs − rhs is 0 (polynomial arithmetic and gcd cancellation), and
-//   exact-grid  exact integer evaluation of the unexpanded sides on a grid large enough for their degree
-//               (exact_grid.hpp), which shares no arithmetic with GiNaC.
+//   ginac       GiNaC performs the steps (diff, subs, evalm, determinant) on a copy, and normal() of lhs − rhs is
+//               0 (polynomial arithmetic and gcd cancellation), and
+//   exact-grid  exact integer evaluation of the unexpanded sides on a grid large enough for their degree, with the
+//               steps performed by its own arithmetic (exact_grid.hpp), which shares no arithmetic with GiNaC.
+// An identity carries its step: a derivative, substitution, matrix product, transpose or determinant is a node of
+// the sides (step_nodes.hpp), not done while the sides are built, so each checker performs it.
 // Both read the sides back from the text of a ginsh script, <name>.ginsh, written first: one line
-// `is(normal((lhs) - (rhs)) == 0);` per entry, which `ginsh <name>.ginsh` answers with 1 (holds) or 0, so anyone
-// can rerun it with GiNaC's own shell; <name>.ginsh.out holds those answers and <name>.grid.out the grid
-// checker's bounds and result.
+// `is(normal((lhs) - (rhs)) == 0);` per entry, the steps written as ginsh's commands, which `ginsh <name>.ginsh`
+// performs and answers with 1 (holds) or 0, so anyone can rerun it with GiNaC's own shell; <name>.ginsh.out holds
+// those answers and <name>.grid.out the grid checker's bounds and result.
 #include "experiments/proofs/decide_sentence.hpp"
 #include "experiments/proofs/proof.hpp"
 
@@ -23,8 +26,9 @@ namespace affinterp::proofs {
 struct Identity {
   std::string name;     ///< the file stem, e.g. "complete-square"
   std::string meaning;  ///< one line: what lhs = rhs says, in words
-  /// Both sides built from the suite's own algebra (theory/) over symbols, not expanded; matrices (GiNaC::matrix)
-  /// compare entry by entry. Distinct symbols must have distinct names (the script names them).
+  /// Both sides built from the suite's own algebra (theory/) over symbols, not expanded, with their steps as step
+  /// nodes; matrices (GiNaC::matrix, or a product or transpose node) compare entry by entry. Distinct symbols must
+  /// have distinct names (the script names them).
   GiNaC::ex lhs, rhs;
 };
 
