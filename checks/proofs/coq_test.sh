@@ -57,8 +57,10 @@ for lemma in lemmas:
     print("Print Assumptions %s_theorems." % lemma["id"])
 sentences = [s for s in json.load(open(sys.argv[1])).get("sentences", []) if s["status"] == "certificate"]
 if sentences:
-    print("Require Affinterp.Sentences.")
-    print("Definition sentences := (%s)." % ", ".join("Affinterp.Sentences." + s["theorem"] for s in sentences))
+    for f in sorted({s["file"][:-2] for s in sentences}):
+        print("Require Affinterp.%s." % f)
+    print("Definition sentences := (%s)." % ", ".join(
+        "Affinterp.%s.%s" % (s["file"][:-2], s["theorem"]) for s in sentences))
     print('Goal True. idtac "== the %d sentences with a certificate". Abort.' % len(sentences))
     print("Print Assumptions sentences.")
 PY
