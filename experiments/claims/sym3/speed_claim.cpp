@@ -293,7 +293,7 @@ Outcome about_ratio_outcome(const std::vector<bench::RecordedRun>& runs, const s
       {"paper_ratio", paper},
       {"paper_machine", kPaperMachine},
       {"about", kAboutReading},
-      {"rule", std::string(kIntervalRule) + ". Across runs: " + std::string(kAcrossMachinesRule)},
+      {"rule", std::string(kIntervalRule) + ". Across machines: " + std::string(kAcrossMachinesRule)},
       {"pooled_bootstrap",
        {{"seed", bench::kPooledSeed}, {"resamples", bench::kPooledResamples}, {"level", 0.95}, {"source", kPooling}}},
       {"tables", nlohmann::json::array({decision.machine_table, decision.run_table})},
