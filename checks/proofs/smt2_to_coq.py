@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""The Coq statement of a stored quantifier-free sentence (reports/proofs/<claim>/<name>.smt2): "the set is
-empty", i.e. for all reals the asserted formula fails. Usage: smt2_to_coq.py <file.smt2> <theorem name>.
+"""The Coq statement of a stored sentence (reports/proofs/<claim>/<name>.smt2): "the set is empty", i.e. for
+all reals the asserted formula fails (its inner quantifiers over the reals kept). Usage: smt2_to_coq.py <file.smt2> <theorem name>.
 The statement is printed on one line, so that coq_test.sh can check that a Coq file states exactly it."""
 import re
 import sys
@@ -45,6 +45,9 @@ def formula(e):
     op, args = e[0], e[1:]
     if op in ("and", "or"):
         return "(" + (" /\\ " if op == "and" else " \\/ ").join(formula(a) for a in args) + ")"
+    if op in ("forall", "exists"):
+        names = " ".join(b[0] for b in args[0])
+        return "(%s %s : R, %s)" % (op, names, formula(args[1]))
     if op == "not":
         return "(~ " + formula(args[0]) + ")"
     if op in ("<", "<=", ">", ">=", "="):
@@ -55,8 +58,8 @@ def formula(e):
 def main(path, name):
     exprs = parse(tokens(open(path).read()))
     logic = [e[1] for e in exprs if e[0] == "set-logic"]
-    if logic != ["QF_NRA"]:
-        sys.exit("%s: not a quantifier-free sentence (%s)" % (path, logic))
+    if logic not in (["QF_NRA"], ["NRA"]):
+        sys.exit("%s: not a sentence over the reals (%s)" % (path, logic))
     names = [e[1] for e in exprs if e[0] == "declare-const"]
     body = [formula(e[1]) for e in exprs if e[0] == "assert"]
     print("Theorem %s : forall %s : R, ~ (%s)." % (name, " ".join(names), " /\\ ".join(body)))
