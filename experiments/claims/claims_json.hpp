@@ -13,8 +13,8 @@ namespace affinterp::claims {
 /// figures, seconds.
 nlohmann::json to_json(const ClaimResult& result);
 
-/// The global engine's tables as the run measured them (engine_speed.hpp, engine_scale.hpp, engine_cli.hpp; null:
-/// not measured).
+/// The global engine's tables as the run measured them: experiments/measurements/'s EngineSpeed, EngineScale and
+/// EngineCli as JSON (null: not measured).
 struct EngineTables {
   nlohmann::json speed, scale, cli;
 };

@@ -5,9 +5,10 @@
 // (reading the meshes and the set-up cancel). E^F's frames are ten times cheaper than E^R's, so it takes 32
 // extra frames, E^R 8: with 8, E^F's difference (a small part of a run) moved by a third from run to run. Beside it,
 // in the same process, the engine's own frame on the same pair: vertices_at(times) of 8 frames, per frame (the CLI
-// solves its frames in batches too). The report (experiments/claims/engine_cli.hpp) sets the one against the other: the
-// target is at most 1.3 times, judged on the bootstrap interval of the ratio of medians over the repetitions. For E^F,
-// cli_frame_memory repeats the CLI runs writing into /dev/shm: the difference is what the file system costs.
+// solves its frames in batches too). The report (experiments/measurements/engine_cli.hpp) sets the one against the
+// other: the target is at most 1.3 times, judged on the bootstrap interval of the ratio of medians over the
+// repetitions. For E^F, cli_frame_memory repeats the CLI runs writing into /dev/shm: the difference is what the
+// file system costs.
 #include "experiments/apps/bench/bench_context.hpp"
 #include "experiments/apps/bench/cli_process.hpp"
 #include "experiments/apps/bench/engine_bench.hpp"

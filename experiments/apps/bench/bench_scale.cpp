@@ -7,7 +7,7 @@
 // weights, the straight barycentre locus, and for E^R the default gauge edge. Peak memory: getrusage's
 // ru_maxrss, its high-water mark reset (Linux /proc/self/clear_refs) before each benchmark builds its
 // Interpolation, so each counter is that benchmark's own peak of the whole process (the cached meshes
-// included). Targets at 1M triangles on 2 cores: experiments/claims/engine_scale.hpp.
+// included). Targets at 1M triangles on 2 cores: experiments/measurements/engine_scale.hpp.
 // scale_* with the back-end the engine picks by size (theory/global/sparse_factor.hpp, what the report's
 // engine_scale reads) and batch_frames/E/size: vertices_at(times) of 8 frames at once, in parallel on the
 // machine's cores (frames_per_s, the amortised cost); backend_* on each back-end by name (…/simplicial,
@@ -168,7 +168,7 @@ void backend_solve(benchmark::State& state, int level, global::SparseBackEnd bac
 
 /// The engine's rows, which decide the 1M-triangle targets: five repetitions of at least half a second each (one
 /// iteration at 1M), each written to the JSON file, so that a verdict rests on the spread of the runs
-/// (experiments/claims/engine_scale.hpp) and not on a median the machine's noise moves across a target.
+/// (experiments/measurements/engine_scale.hpp) and not on a median the machine's noise moves across a target.
 void repeated(benchmark::internal::Benchmark* b) {
   b->Unit(benchmark::kMillisecond)->MinTime(0.5)->Repetitions(5)->DisplayAggregatesOnly(true);
 }
