@@ -1,63 +1,23 @@
 #include "theory/global/options.hpp"
 
-#include <stdexcept>
+#include "theory/global/refused_problem.hpp"
+
+#include <cmath>
+#include <string>
 
 namespace affinterp::global {
 
-std::string to_string(LocalHomotopy homotopy) {
-  switch (homotopy) {
-    case LocalHomotopy::exp:
-      return "exp";
-    case LocalHomotopy::polar:
-      return "polar";
-    case LocalHomotopy::linear:
-      return "linear";
-    case LocalHomotopy::svd:
-      return "svd";
-  }
-  return "?";
-}
-
-std::string to_string(Energy energy) {
-  switch (energy) {
-    case Energy::F:
-      return "F";
-    case Energy::S:
-      return "S";
-    case Energy::R:
-      return "R";
-    case Energy::blend:
-      return "blend";
-  }
-  return "?";
-}
-
-std::string to_string(RotationBranch branch) {
-  switch (branch) {
-    case RotationBranch::principal:
-      return "principal";
-    case RotationBranch::consistent:
-      return "consistent";
-  }
-  return "?";
-}
-
-LocalHomotopy parse_local_homotopy(const std::string& name) {
-  for (auto h : {LocalHomotopy::exp, LocalHomotopy::polar, LocalHomotopy::linear, LocalHomotopy::svd})
-    if (to_string(h) == name) return h;
-  throw std::invalid_argument("unknown local homotopy '" + name + "' (exp, polar, linear, svd)");
-}
-
-Energy parse_energy(const std::string& name) {
-  for (auto e : {Energy::F, Energy::S, Energy::R, Energy::blend})
-    if (to_string(e) == name) return e;
-  throw std::invalid_argument("unknown energy '" + name + "' (F, S, R, blend)");
-}
-
-RotationBranch parse_rotation_branch(const std::string& name) {
-  for (auto b : {RotationBranch::principal, RotationBranch::consistent})
-    if (to_string(b) == name) return b;
-  throw std::invalid_argument("unknown rotation branch '" + name + "' (principal, consistent)");
+void require_valid_options(const InterpolationOptions& options, Eigen::Index triangles) {
+  if (!(options.t_begin <= options.t_end) || !std::isfinite(options.t_begin) || !std::isfinite(options.t_end))
+    throw RefusedProblem("the time range must be finite with t_begin <= t_end");
+  const auto in_unit_interval = [](double w) { return w >= 0 && w <= 1; };
+  if (!in_unit_interval(options.blend_weight)) throw RefusedProblem("the blend weight w must lie in [0, 1]");
+  if (options.blend_weights.size() == 0) return;
+  if (options.blend_weights.size() != triangles)
+    throw RefusedProblem("the blend needs one weight w_i per triangle (" + std::to_string(triangles) + "), got " +
+                         std::to_string(options.blend_weights.size()));
+  if (!options.blend_weights.unaryExpr(in_unit_interval).all())
+    throw RefusedProblem("blend weights w_i must lie in [0, 1]");
 }
 
 }  // namespace affinterp::global
