@@ -30,8 +30,9 @@ TEST(ExactGrid, AcceptsARightIdentityAndBoundsItsDegree) {
   ASSERT_EQ(v.degree_bounds.size(), 2u);
   EXPECT_EQ(v.degree_bounds[0].second, 3u);
   EXPECT_EQ(v.degree_bounds[1].second, 3u);
-  EXPECT_EQ(v.grid_points, 16u);
-  EXPECT_EQ(v.evaluated, 16u);
+  EXPECT_EQ(v.total_degree, 3u);
+  EXPECT_EQ(v.grid_points, 10u);  // (a, b) in {0..3}² with a + b ≤ 3
+  EXPECT_EQ(v.evaluated, 10u);
 }
 
 TEST(ExactGrid, FindsAWrongIdentityNonZero) {
@@ -58,8 +59,8 @@ TEST(ExactGrid, RefusesWhatIsNotRational) {
   EXPECT_THROW(grid_check(x / zero_polynomial, x / zero_polynomial), std::invalid_argument);
 }
 
-// The grid bound is sufficient: a polynomial of degree ≤ d_i in each variable that is nonzero somewhere is found
-// nonzero on the grid {0..d_i}, even one that vanishes on a grid one point smaller in every direction.
+// The grid bound is sufficient: a polynomial of degree ≤ d_i in each variable and of total degree ≤ T that is
+// nonzero somewhere is found nonzero on S = {a ≤ d, Σ a ≤ T}, even one that vanishes on every other point of S.
 RC_GTEST_PROP(ExactGrid, GridOfTheBoundDetectsEveryNonzeroPolynomial, ()) {
   {
     const unsigned dx = *rc::gen::inRange(1u, 4u), dy = *rc::gen::inRange(0u, 4u);

@@ -91,7 +91,10 @@ class Program {
     nodes_.push_back(std::move(node));
     return nodes_.size() - 1;
   }
-  std::vector<unsigned> zeros() const { return std::vector<unsigned>(variables_.size(), 0); }
+  /// A degree bound per variable, and last the bound of the total degree, which follows the same rules.
+  std::size_t degree_slots() const { return variables_.size() + 1; }
+  std::size_t total() const { return variables_.size(); }
+  std::vector<unsigned> zeros() const { return std::vector<unsigned>(degree_slots(), 0); }
   unsigned derivative_depth() const {
     return static_cast<unsigned>(std::count_if(scopes_.begin(), scopes_.end(), [](const Scope& s) { return s.derivative; }));
   }
@@ -117,7 +120,7 @@ class Program {
     node.denominator_is_one = first.denominator_is_one;
     for (std::size_t k = 1; k < node.children.size(); ++k) {
       const Node& c = nodes_[node.children[k]];
-      for (std::size_t v = 0; v < variables_.size(); ++v) {
+      for (std::size_t v = 0; v < degree_slots(); ++v) {
         if (op == Node::Op::sum)
           node.numerator_degree[v] = std::max(node.numerator_degree[v] + c.denominator_degree[v],
                                               c.numerator_degree[v] + node.denominator_degree[v]);
@@ -148,7 +151,7 @@ class Program {
     }
     if (node.op == Node::Op::variable) {
       node.numerator_degree = node.denominator_degree = zeros();
-      node.numerator_degree[node.variable] = 1;
+      node.numerator_degree[node.variable] = node.numerator_degree[total()] = 1;
       return push(std::move(node));
     }
     // (n + ε d)/d: each coefficient of the numerator is bounded by n's or d's bound.
@@ -157,7 +160,7 @@ class Program {
     node.denominator_degree = value.denominator_degree;
     node.denominator_is_one = value.denominator_is_one;
     if (node.slots != 0)
-      for (std::size_t v = 0; v < variables_.size(); ++v)
+      for (std::size_t v = 0; v < degree_slots(); ++v)
         node.numerator_degree[v] = std::max(node.numerator_degree[v], node.denominator_degree[v]);
     return push(std::move(node));
   }
@@ -174,7 +177,7 @@ class Program {
     node.op = Node::Op::variable;
     node.variable = variables_.index(e);
     node.numerator_degree = node.denominator_degree = zeros();
-    node.numerator_degree[node.variable] = 1;
+    node.numerator_degree[node.variable] = node.numerator_degree[total()] = 1;
     return push(std::move(node));
   }
 
@@ -185,8 +188,8 @@ class Program {
   }
 
   /// d/dx of the child, the quotient rule on its jets: (n/d)' = (n' d − n d')/d². Degree bounds: n' d − n d' is
-  /// bounded by deg n + deg d, less one in x when every dependence on the grid's x inside passes through ε_j
-  /// (x free here, and no open substitution brings x in by its value): then n' = ∂n/∂x lowers the degree in x.
+  /// bounded by deg n + deg d, less one in x and in total when every dependence on the grid's x inside passes
+  /// through ε_j (x free here, and no open substitution brings x in by its value): then n' = ∂n/∂x.
   std::size_t derivative(const GiNaC::ex& e) {
     if (!GiNaC::is_a<GiNaC::symbol>(e.op(1))) throw std::invalid_argument("grid check: d/d of a non-symbol");
     const unsigned depth = derivative_depth();
@@ -213,11 +216,12 @@ class Program {
     node.numerator_degree = c.numerator_degree;
     node.denominator_degree = c.denominator_degree;
     if (!c.denominator_is_one)
-      for (std::size_t v = 0; v < variables_.size(); ++v) {
+      for (std::size_t v = 0; v < degree_slots(); ++v) {
         node.numerator_degree[v] += c.denominator_degree[v];
         node.denominator_degree[v] *= 2;
       }
     if (lowers && node.numerator_degree[x] > 0) --node.numerator_degree[x];
+    if (lowers && node.numerator_degree[total()] > 0) --node.numerator_degree[total()];
     return push(std::move(node));
   }
 
@@ -341,7 +345,7 @@ class Program {
     const Node& base = nodes_[node.children.front()];
     const unsigned n = static_cast<unsigned>(node.exponent < 0 ? -node.exponent : node.exponent);
     node.numerator_degree = node.denominator_degree = zeros();
-    for (std::size_t v = 0; v < variables_.size(); ++v) {
+    for (std::size_t v = 0; v < degree_slots(); ++v) {
       node.numerator_degree[v] = n * (node.exponent < 0 ? base.denominator_degree[v] : base.numerator_degree[v]);
       node.denominator_degree[v] = n * (node.exponent < 0 ? base.numerator_degree[v] : base.denominator_degree[v]);
     }
@@ -539,6 +543,35 @@ struct EntryCheck {
 
 std::string int_text(const Integer& n) { return n.str(); }
 
+/// The number of points of S = {a : 0 ≤ a_i ≤ d_i, Σ a_i ≤ T}; throws above `max_points`.
+std::uint64_t count_points(const std::vector<unsigned>& bound, unsigned T, std::uint64_t max_points) {
+  std::vector<std::uint64_t> ways(T + 1, 0);  // ways[s]: points of the variables so far with Σ a_i = s
+  ways[0] = 1;
+  for (const unsigned d : bound) {
+    std::vector<std::uint64_t> next(T + 1, 0);
+    for (unsigned s = 0; s <= T; ++s)
+      for (unsigned a = 0; a <= std::min(d, s); ++a) next[s] = std::min(next[s] + ways[s - a], max_points + 1);
+    ways = std::move(next);
+  }
+  std::uint64_t points = 0;
+  for (const std::uint64_t w : ways) points = std::min(points + w, max_points + 1);
+  if (points > max_points)
+    throw std::invalid_argument("grid check: more than " + std::to_string(max_points) + " grid points");
+  return points;
+}
+
+/// The next point of S after `at` (an odometer that carries when a coordinate passes d_i or the sum passes T; S
+/// being closed downwards, it visits every point of S once). False after the last.
+bool next_point(std::vector<unsigned>& at, unsigned& sum, const std::vector<unsigned>& bound, unsigned T) {
+  for (std::size_t v = 0; v < at.size(); ++v) {
+    ++at[v], ++sum;
+    if (at[v] <= bound[v] && sum <= T) return true;
+    sum -= at[v];
+    at[v] = 0;
+  }
+  return false;
+}
+
 }  // namespace
 
 GridVerdict grid_check(const GiNaC::ex& lhs, const GiNaC::ex& rhs, std::uint64_t max_points) {
@@ -558,28 +591,27 @@ GridVerdict grid_check(const GiNaC::ex& lhs, const GiNaC::ex& rhs, std::uint64_t
   for (const auto& [l, r] : entries)
     checks.push_back({Program(l, variables), Program(r, variables), {}, {}, {}, {}, {}});
 
-  // d_i: the bound of N's degree, the largest over the entries.
-  std::vector<unsigned> bound(variables.size(), 0);
+  // d_i: the bound of N's degree in x_i, and T of its total degree, the largest over the entries.
+  std::vector<unsigned> bound(variables.size() + 1, 0);
   for (const EntryCheck& c : checks) {
     const Node &l = c.lhs.nodes()[c.lhs.root()], &r = c.rhs.nodes()[c.rhs.root()];
-    for (std::size_t v = 0; v < variables.size(); ++v)
+    for (std::size_t v = 0; v <= variables.size(); ++v)
       bound[v] = std::max(
           {bound[v], l.numerator_degree[v] + r.denominator_degree[v], r.numerator_degree[v] + l.denominator_degree[v]});
   }
+  const unsigned T = bound.back();
+  bound.pop_back();
   GridVerdict verdict;
-  verdict.grid_points = 1;
-  for (std::size_t v = 0; v < variables.size(); ++v) {
-    verdict.degree_bounds.emplace_back(variables.names()[v], bound[v]);
-    verdict.grid_points *= bound[v] + 1;
-    if (verdict.grid_points > max_points)
-      throw std::invalid_argument("grid check: more than " + std::to_string(max_points) + " grid points");
-  }
+  verdict.total_degree = T;
+  for (std::size_t v = 0; v < variables.size(); ++v) verdict.degree_bounds.emplace_back(variables.names()[v], bound[v]);
+  verdict.grid_points = count_points(bound, T, max_points);
 
   // A point where N ≠ 0 and both sides are defined is a point where they differ: the identity fails. N vanishing
   // on the whole grid with neither denominator the zero polynomial proves it.
   bool nonzero_somewhere = false;
   std::vector<unsigned> at(variables.size(), 0);
-  for (std::uint64_t k = 0; k < verdict.grid_points; ++k) {
+  unsigned sum = 0;
+  do {
     ++verdict.evaluated;
     for (EntryCheck& c : checks) {
       Integer N;
@@ -596,8 +628,7 @@ GridVerdict grid_check(const GiNaC::ex& lhs, const GiNaC::ex& rhs, std::uint64_t
         return verdict;
       }
     }
-    for (std::size_t v = 0; v < at.size() && ++at[v] > bound[v]; ++v) at[v] = 0;  // next point
-  }
+  } while (next_point(at, sum, bound, T));
   for (const EntryCheck& c : checks)
     if (!c.lhs_denominator_seen_nonzero || !c.rhs_denominator_seen_nonzero)
       throw std::invalid_argument("grid check: a denominator is the zero polynomial");
@@ -609,10 +640,12 @@ GridVerdict grid_check(const GiNaC::ex& lhs, const GiNaC::ex& rhs, std::uint64_t
 
 std::string to_text(const GridVerdict& verdict) {
   std::ostringstream out;
-  out << "# exact-grid: lhs - rhs as one fraction N/D without cancelling; N evaluated exactly on the grid\n"
-      << "# prod_i {0..d_i}, d_i a structural bound of deg_i N (Alon, Combinatorial Nullstellensatz, Lemma 2.1:\n"
-      << "# a polynomial of degree <= d_i in each x_i vanishing on such a grid is zero).\n";
+  out << "# exact-grid: lhs - rhs as one fraction N/D without cancelling, its steps performed; N evaluated exactly\n"
+      << "# on S = {a : 0 <= a_i <= d_i, sum a_i <= T}, d_i and T structural bounds of deg_i N and of its total\n"
+      << "# degree (a polynomial with its monomials in S vanishing on S is zero: Alon, Combinatorial\n"
+      << "# Nullstellensatz, Lemma 2.1, for the box; exact_grid.hpp for S).\n";
   for (const auto& [name, d] : verdict.degree_bounds) out << "d(" << name << ") = " << d << "\n";
+  out << "T = " << verdict.total_degree << "\n";
   out << "grid points: " << verdict.grid_points << "\n";
   out << "evaluated: " << verdict.evaluated << "\n";
   if (verdict.zero) {

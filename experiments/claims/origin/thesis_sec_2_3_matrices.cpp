@@ -1,6 +1,7 @@
 #include "experiments/claims/claim.hpp"
 #include "experiments/claims/origin/ginac_values.hpp"
 #include "experiments/proofs/identity.hpp"
+#include "experiments/proofs/step_nodes.hpp"
 #include "plots/origin/fig_2_7.hpp"
 #include "theory/origin/affine_frames.hpp"
 #include "theory/origin/equal_energy_locus.hpp"
@@ -55,8 +56,16 @@ std::string text(const GiNaC::matrix& p) {
 Proof proof(const ClaimContext& ctx, const origin::TwoTriangles& config) {
   const origin::Symbols& s = origin::symbols();
   const GiNaC::matrix B1 = origin::intermediate_map(config, 0, s.v), B2 = origin::intermediate_map(config, 1, s.v);
-  const auto about_o = [](const GiNaC::matrix& world) -> GiNaC::ex {
-    return origin::translate_origin(world, minus_o());
+  // T(A, −o) = shift(−o) · A · shift(o) (Def. 2.3.2, translate_origin), a product the checkers perform.
+  const GiNaC::matrix I{{1, 0}, {0, 1}};
+  const auto about_o = [&I](const GiNaC::matrix& world) -> GiNaC::ex {
+    return proofs::product(
+        {origin::affine_matrix(I, minus_o()), world, origin::affine_matrix(I, minus_o().mul_scalar(-1))});
+  };
+  // A p for a point p = (p1, p2): the first two entries of A (p1, p2, 1)ᵀ, a product the checkers perform.
+  const auto apply = [](const GiNaC::matrix& A, const GiNaC::matrix& p) -> GiNaC::ex {
+    const GiNaC::ex image = proofs::product(A, GiNaC::matrix{{p(0, 0)}, {p(1, 0)}, {1}});
+    return GiNaC::matrix{{proofs::entry(image, 0)}, {proofs::entry(image, 1)}};
   };
   std::vector<proofs::Identity> identities = {
       {"A1-about-o", "printed A1 = T(A1(0), −o)", origin::printed::A1(), about_o(config.A[0])},
@@ -71,7 +80,7 @@ Proof proof(const ClaimContext& ctx, const origin::TwoTriangles& config) {
     const std::string p = k == 1 ? "p2" : "p3";
     const GiNaC::matrix at = origin::column(config.source(0, k), config.source(1, k));
     identities.push_back({"shared-vertex-" + p, "A1 " + p + " = A2 " + p + " (one target configuration; fails)",
-                          origin::apply(config.A[0], at), origin::apply(config.A[1], at)});
+                          apply(config.A[0], at), apply(config.A[1], at)});
   }
   return proofs::identity_proof(
       "every origin o = (x, y) and every intermediate configuration v",
