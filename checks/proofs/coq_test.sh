@@ -63,10 +63,14 @@ if sentences:
         "Affinterp.%s.%s" % (s["file"][:-2], s["theorem"]) for s in sentences))
     print('Goal True. idtac "== the %d sentences with a certificate". Abort.' % len(sentences))
     print("Print Assumptions sentences.")
-for claim in json.load(open(sys.argv[1])).get("claims", []):
-    print("Require Affinterp.%s." % claim["file"][:-2])
-    print('Goal True. idtac "== the claim %s: %s". Abort.' % (claim["claim"], claim["theorem"]))
-    print("Print Assumptions Affinterp.%s.%s." % (claim["file"][:-2], claim["theorem"]))
+claims = json.load(open(sys.argv[1])).get("claims", [])
+if claims:
+    for f in sorted({c["file"][:-2] for c in claims}):
+        print("Require Affinterp.%s." % f)
+    print("Definition claims := (%s)." % ", ".join(
+        "Affinterp.%s.%s" % (c["file"][:-2], c["theorem"]) for c in claims))
+    print('Goal True. idtac "== the claims %s". Abort.' % " ".join(c["claim"] for c in claims))
+    print("Print Assumptions claims.")
 PY
 grep -q '^Print Assumptions' Assumptions.v || { echo "MANIFEST.json lists no theorem"; exit 1; }
 coqc -q -w -all -R . Affinterp Assumptions.v >assumptions.log 2>&1 || { cat assumptions.log; exit 1; }
