@@ -1,0 +1,250 @@
+// The 3D engine (theory/global3/interpolation3.hpp) on generated bars of tetrahedra and tubes of triangles: its
+// ends, its minimiser against a dense least-squares one, its local maps against theory/local3, the 3π twisted
+// bar, and batch frames against frames one at a time.
+#include "theory/global3/interpolation3.hpp"
+#include "checks/global3/meshes3.hpp"
+#include "theory/global3/frame_metrics3.hpp"
+#include "theory/global3/local_maps3.hpp"
+#include "theory/local3/local3.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include <numbers>
+
+namespace interpolation3_test {
+
+using namespace affinterp::global3;
+using affinterp::global::LocalHomotopy;
+using affinterp::global::RotationBranch;
+using meshes3::box_diagonal;
+constexpr double pi = std::numbers::pi;
+
+/// Default options changed by `set`.
+template <class Set>
+Interpolation3Options options(Set set) {
+  Interpolation3Options o;
+  set(o);
+  return o;
+}
+
+Constraints3 pins(std::vector<affinterp::global::PinnedVertex> pinned, bool barycentre) {
+  Constraints3 c;
+  c.pinned = std::move(pinned);
+  if (!barycentre) c.barycentre.reset();
+  return c;
+}
+
+affinterp::global::PinnedVertex pin(Eigen::Index vertex, double weight) {
+  affinterp::global::PinnedVertex p;
+  p.vertex = vertex;
+  p.weight = weight;
+  return p;
+}
+
+struct Pair {
+  const char* name;
+  Mesh3 source, target;
+};
+
+std::vector<Pair> pairs() {
+  const Mesh3 bar = meshes3::tetrahedral_bar(6, 4), tube = meshes3::triangle_tube(6, 8, 4);
+  return {{"bar", bar, meshes3::bent(meshes3::twisted(bar, 2.5, 4), 4)},
+          {"tube", tube, meshes3::bent(meshes3::twisted(tube, 2.5, 4), 4)}};
+}
+
+constexpr LocalHomotopy homotopies[] = {LocalHomotopy::exp, LocalHomotopy::polar, LocalHomotopy::linear,
+                                        LocalHomotopy::svd};
+
+// At t = 0 every A_i(0) = I and at t = 1 A_i(1) = A_i, whose in-span parts the source and the target meet exactly
+// (E^F = 0 there), with the barycentre on its line: the ends are the meshes, to rounding.
+TEST(Interpolation3, EndsAreTheSourceAndTheTarget) {
+  for (const Pair& pair : pairs())
+    for (LocalHomotopy homotopy : homotopies)
+      for (RotationBranch branch : {RotationBranch::consistent, RotationBranch::principal}) {
+        const Interpolation3 engine(pair.source, pair.target,
+                                    options([&](auto& o) { o.homotopy = homotopy, o.rotation_branch = branch; }));
+        const double box = box_diagonal(pair.target.vertices);
+        EXPECT_LT((engine.vertices_at(0.0) - pair.source.vertices).cwiseAbs().maxCoeff(), 1e-9 * box) << pair.name;
+        EXPECT_LT((engine.vertices_at(1.0) - pair.target.vertices).cwiseAbs().maxCoeff(), 1e-9 * box) << pair.name;
+      }
+}
+
+/// The minimiser of Σ_i w_i ‖(X_i − A_i E_i) E_i⁺‖²_F + Σ c‖v_k − r_k‖² + c_o ‖mean v − u‖², written as one dense
+/// least-squares problem in the 3n coordinates (row by row from the definition) and solved by QR.
+Eigen::Matrix3Xd dense_minimiser(const Mesh3& rest, const std::vector<Eigen::Matrix3d>& A, const Eigen::VectorXd& w,
+                                 const Constraints3& constraints, const ConstraintTargets3& targets) {
+  const Eigen::Index n = rest.vertex_count(), d = rest.corners() - 1;
+  std::vector<Eigen::RowVectorXd> rows;
+  std::vector<double> rhs;
+  for (Eigen::Index i = 0; i < rest.element_count(); ++i) {
+    Eigen::MatrixXd E(3, d);
+    for (Eigen::Index c = 1; c <= d; ++c) E.col(c - 1) = rest.corner(i, static_cast<int>(c)) - rest.corner(i, 0);
+    const Eigen::MatrixXd pinv = E.completeOrthogonalDecomposition().pseudoInverse();  // d × 3
+    const Eigen::MatrixXd target = A[static_cast<std::size_t>(i)] * E * pinv;
+    for (int r = 0; r < 3; ++r)  // residual entry (r, col) = Σ_c (x_c − x_0)_r pinv(c, col) − target(r, col)
+      for (int col = 0; col < 3; ++col) {
+        Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(3 * n);
+        for (Eigen::Index c = 1; c <= d; ++c) {
+          row[3 * rest.elements(c, i) + r] += std::sqrt(w[i]) * pinv(c - 1, col);
+          row[3 * rest.elements(0, i) + r] -= std::sqrt(w[i]) * pinv(c - 1, col);
+        }
+        rows.push_back(row);
+        rhs.push_back(std::sqrt(w[i]) * target(r, col));
+      }
+  }
+  for (std::size_t j = 0; j < constraints.pinned.size(); ++j)
+    for (int r = 0; r < 3; ++r) {
+      Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(3 * n);
+      row[3 * constraints.pinned[j].vertex + r] = std::sqrt(constraints.pinned[j].weight);
+      rows.push_back(row);
+      rhs.push_back(std::sqrt(constraints.pinned[j].weight) * targets.pinned(r, static_cast<Eigen::Index>(j)));
+    }
+  if (constraints.barycentre)
+    for (int r = 0; r < 3; ++r) {
+      Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(3 * n);
+      const double c = std::sqrt(constraints.barycentre->weight);
+      for (Eigen::Index k = 0; k < n; ++k) row[3 * k + r] = c / static_cast<double>(n);
+      rows.push_back(row);
+      rhs.push_back(c * targets.barycentre[r]);
+    }
+  Eigen::MatrixXd J(static_cast<Eigen::Index>(rows.size()), 3 * n);
+  for (std::size_t k = 0; k < rows.size(); ++k) J.row(static_cast<Eigen::Index>(k)) = rows[k];
+  const Eigen::VectorXd x =
+      J.colPivHouseholderQr().solve(Eigen::Map<Eigen::VectorXd>(rhs.data(), static_cast<Eigen::Index>(rhs.size())));
+  return Eigen::Map<const Eigen::Matrix3Xd>(x.data(), 3, n);
+}
+
+TEST(Interpolation3, IsTheDenseLeastSquaresMinimiser) {
+  const std::vector<Constraints3> constraint_sets{pins({}, true),  // the barycentre's line alone
+                                                  pins({pin(0, 2.0), pin(5, 0.5)}, true),  // pins and the barycentre
+                                                  pins({pin(3, 1.0)}, false)};             // a pin alone
+  const Mesh3 bar = meshes3::tetrahedral_bar(2, 2), tube = meshes3::triangle_tube(2, 5, 2);
+  for (const Pair& pair : {Pair{"bar", bar, meshes3::bent(meshes3::twisted(bar, 1.5, 2), 2)},
+                           Pair{"tube", tube, meshes3::bent(meshes3::twisted(tube, 1.5, 2), 2)}})
+    for (const Constraints3& constraints : constraint_sets)
+      for (bool area_weighted : {true, false}) {
+        const Interpolation3 engine(pair.source, pair.target, options([&](auto& o) {
+                                      o.area_weighted = area_weighted, o.constraints = constraints;
+                                    }));
+        for (double t : {0.3, 0.7}) {
+          const Eigen::Matrix3Xd v = engine.vertices_at(t);
+          const Eigen::Matrix3Xd reference = dense_minimiser(
+              pair.source, engine.local_maps_at(t), engine.system().weights(), constraints, engine.targets_at(t));
+          EXPECT_LT((v - reference).cwiseAbs().maxCoeff(), 1e-10 * box_diagonal(reference)) << pair.name;
+          EXPECT_LE(engine.energy_at(t, v), engine.energy_at(t, reference) * (1 + 1e-12) + 1e-14) << pair.name;
+        }
+      }
+}
+
+// The batched local maps are the local3 homotopies of each element (exp-log through sym3::exp_batched).
+TEST(Interpolation3, LocalMapsAreTheLocal3Homotopies) {
+  const Pair pair = pairs()[0];
+  const std::vector<Eigen::Matrix3d> A = [&] {
+    const Interpolation3 ends(pair.source, pair.target, options([](auto& o) { o.homotopy = LocalHomotopy::linear; }));
+    return ends.local_maps_at(1.0);
+  }();
+  const Interpolation3 engine(pair.source, pair.target);
+  const std::vector<Eigen::Matrix3d> maps = engine.local_maps_at(0.4);
+  for (std::size_t i = 0; i < A.size(); ++i) {
+    const affinterp::local3::Svd3<double> d = affinterp::local3::svd3<double>(A[i]);
+    const affinterp::local3::ExpLogHomotopy3<double> path(engine.rotation_logs().col(static_cast<Eigen::Index>(i)), d);
+    EXPECT_LT((maps[i] - path(0.4)).norm(), 1e-13 * A[i].norm());
+  }
+}
+
+/// Max over the vertices (those with |x − x_skip| > skip_radius) of |v − exact| over the bar's width.
+double twist_error(const Eigen::Matrix3Xd& v, const Mesh3& exact, double width, double x_skip, double skip_radius) {
+  double error = 0;
+  for (Eigen::Index k = 0; k < v.cols(); ++k)
+    if (std::abs(exact.vertices(0, k) - x_skip) > skip_radius)
+      error = std::max(error, (v.col(k) - exact.vertices.col(k)).norm() / width);
+  return error;
+}
+
+// A bar (length 10, width 1/10, 30 boxes) twisted by `turn` along its length: its in-between pose at t = 1/2 is
+// the bar twisted by turn/2. Not exactly: the twist shears each tetrahedron (by the twist rate times its distance
+// from the axis), and exp-log's R^t S^t of a sheared element is not half the twist; the bar is thin so that the
+// shear is small. The consistent branch gives the elements beyond π their turns; the principal branch turns them
+// the short way round, by about a width off.
+TEST(Interpolation3, TwistedBarBeyondPiMatchesItsExactHalfwayPose) {
+  constexpr double length = 10, width = 0.1;
+  const Mesh3 bar = meshes3::tetrahedral_bar(30, length, width);
+  const auto principal = options([](auto& o) { o.rotation_branch = RotationBranch::principal; });
+  const Mesh3 target = meshes3::twisted(bar, 1.8 * pi, length), halfway = meshes3::twisted(bar, 0.9 * pi, length);
+  const double error = twist_error(Interpolation3(bar, target).vertices_at(0.5), halfway, width, 0, -1);
+  const double principal_error =
+      twist_error(Interpolation3(bar, target, principal).vertices_at(0.5), halfway, width, 0, -1);
+  std::cout << "1.8pi bar at t = 1/2, max vertex error / width: consistent " << error << ", principal "
+            << principal_error << "\n";
+  EXPECT_LT(error, 0.1);
+  EXPECT_GT(principal_error, 1.0);
+  EXPECT_EQ(frame_metrics3(bar, Interpolation3(bar, target).vertices_at(0.5)).inverted_elements, 0);
+}
+
+// Twisted by 3π, the elements at twist 2π lie on the exponential's singular sphere (rotation_branches3.hpp): no
+// logarithm of theirs gives their halfway turn, and the frame is off by up to about a width there, within one box of
+// that section. Elsewhere the consistent branch matches the 1.5π bar; the principal one is off by a width beyond π.
+TEST(Interpolation3, TwistedBarThreePiMatchesItsExactHalfwayPoseAwayFromTheFullTurn) {
+  constexpr double length = 10, width = 0.1, box = length / 30;
+  const Mesh3 bar = meshes3::tetrahedral_bar(30, length, width);
+  const Mesh3 target = meshes3::twisted(bar, 3 * pi, length), halfway = meshes3::twisted(bar, 1.5 * pi, length);
+  const Interpolation3 consistent(bar, target);
+  const Interpolation3 principal(bar, target, options([](auto& o) { o.rotation_branch = RotationBranch::principal; }));
+  const double full_turn = 2 * length / 3;  // where the twist is 2π
+  const double error = twist_error(consistent.vertices_at(0.5), halfway, width, full_turn, 1.01 * box);
+  const double overall = twist_error(consistent.vertices_at(0.5), halfway, width, 0, -1);
+  const double principal_error = twist_error(principal.vertices_at(0.5), halfway, width, full_turn, 1.01 * box);
+  std::cout << "3pi bar at t = 1/2, max vertex error / width: consistent " << error << " (" << overall
+            << " at the full turn), principal " << principal_error << "\n";
+  EXPECT_LT(error, 0.35);
+  EXPECT_LT(overall, 1.2);
+  EXPECT_GT(principal_error, 1.0);
+  EXPECT_NEAR(consistent.rotation_logs().colwise().norm().maxCoeff(), 3 * pi, 0.1);
+}
+
+// One frame at a time, a batch in parallel, and one frame on two threads: the same bits. The bar has more
+// elements than one exp_batched chunk, so that the two threads share its chunks.
+TEST(Interpolation3, BatchFramesAreTheFramesOneAtATime) {
+  const Mesh3 bar = meshes3::tetrahedral_bar(200, 20);
+  const Mesh3 target = meshes3::bent(meshes3::twisted(bar, 3 * pi, 20), 20);
+  ASSERT_GT(bar.element_count(), exp_chunk);
+  const std::vector<double> times{0.0, 0.15, 0.5, 0.85, 1.0, 0.5};
+  for (LocalHomotopy homotopy : homotopies) {
+    const Interpolation3 one(bar, target, options([&](auto& o) { o.homotopy = homotopy, o.frame_threads = 1; }));
+    const Interpolation3 two(bar, target, options([&](auto& o) { o.homotopy = homotopy, o.frame_threads = 2; }));
+    const std::vector<Eigen::Matrix3Xd> batch = one.vertices_at(times);
+    for (std::size_t f = 0; f < times.size(); ++f) {
+      EXPECT_EQ(batch[f], one.vertices_at(times[f]));
+      EXPECT_EQ(batch[f], two.vertices_at(times[f]));
+    }
+  }
+}
+
+TEST(Interpolation3, FrameTimingsArePartsOfTheFrame) {
+  const Pair pair = pairs()[0];
+  const Interpolation3 engine(pair.source, pair.target);
+  FrameTimings timings;
+  EXPECT_EQ(engine.vertices_at(0.5, timings), engine.vertices_at(0.5));
+  EXPECT_GT(timings.local_maps, 0);
+  EXPECT_GE(timings.right_hand_side, 0);
+  EXPECT_GT(timings.solve, 0);
+}
+
+TEST(Interpolation3, RefusesANonFiniteTimeAndUnfixedTranslation) {
+  const Pair pair = pairs()[0];
+  const Interpolation3 engine(pair.source, pair.target);
+  EXPECT_THROW(engine.vertices_at(std::nan("")), std::out_of_range);
+  EXPECT_THROW(engine.vertices_at(std::vector<double>{0.5, INFINITY}), std::out_of_range);
+  EXPECT_THROW(Interpolation3(pair.source, pair.target, options([](auto& o) { o.constraints = pins({}, false); })),
+               affinterp::global::RefusedProblem);
+  EXPECT_THROW(
+      Interpolation3(pair.source, pair.target, options([](auto& o) { o.constraints = pins({pin(999, 1)}, true); })),
+      affinterp::global::RefusedProblem);
+  EXPECT_THROW(
+      Interpolation3(pair.source, pair.target, options([](auto& o) { o.constraints = pins({pin(1, -1)}, true); })),
+      affinterp::global::RefusedProblem);
+}
+
+}  // namespace interpolation3_test

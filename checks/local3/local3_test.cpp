@@ -1,0 +1,164 @@
+// The local theory in 3D (theory/local3): rotation logarithm and exponential at every angle, the branch helper,
+// the rotation-only SVD, and the four homotopies' ends and exp-log's determinant.
+#include "theory/local3/local3.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+namespace local3_test {
+
+using namespace affinterp::local3;
+using M = Mat3<double>;
+using V = Vec3<double>;
+constexpr double pi = std::numbers::pi;
+
+/// A ∈ GL⁺(3) with entries uniform in [−2, 2], a column negated if det < 0.
+M random_map(std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(-2, 2);
+  M A;
+  do {
+    for (int k = 0; k < 9; ++k) A(k) = u(rng);
+  } while (std::abs(A.determinant()) < 0.05);
+  if (A.determinant() < 0) A.col(0) = -A.col(0);
+  return A;
+}
+
+V random_unit(std::mt19937& rng) {
+  std::normal_distribution<double> g;
+  return V(g(rng), g(rng), g(rng)).normalized();
+}
+
+TEST(RotationExp, IsTheRotationAboutTheAxisByTheAngle) {
+  std::mt19937 rng(1);
+  for (int trial = 0; trial < 200; ++trial) {
+    const V axis = random_unit(rng);
+    const double theta = std::uniform_real_distribution<double>(0, 9)(rng);  // beyond 2π too
+    const M R = rotation_exp<double>(theta * axis);
+    EXPECT_LT((R - Eigen::AngleAxisd(theta, axis).toRotationMatrix()).norm(), 1e-14);
+    EXPECT_LT((R * R.transpose() - M::Identity()).norm(), 1e-14);
+  }
+}
+
+// log(exp ω) = ω for |ω| < π, to 4·10⁻¹⁶ relative at tiny angles and 10⁻¹⁴ absolute near π.
+TEST(RotationLog, RoundTripsOnThePrincipalBranch) {
+  std::mt19937 rng(2);
+  for (double theta : {1e-300, 1e-12, 1e-8, 1e-4, 0.5, 1.0, pi / 2, 2.0, 3.0, pi - 1e-6, pi - 1e-9, pi - 1e-13}) {
+    for (int trial = 0; trial < 20; ++trial) {
+      const V omega = theta * random_unit(rng);
+      const V back = rotation_log<double>(rotation_exp<double>(omega));
+      const double tolerance = theta < 1e-3 ? 4e-16 * theta : 1e-14;
+      EXPECT_LE((back - omega).norm(), tolerance) << "theta " << theta;
+    }
+  }
+}
+
+// At θ = π both ±π·axis are principal logarithms: the log is one of them, and exp of it is R.
+TEST(RotationLog, AnglePiTakesTheAxisFromTheSymmetricPart) {
+  std::mt19937 rng(3);
+  for (int trial = 0; trial < 50; ++trial) {
+    const V axis = random_unit(rng);
+    const M R = Eigen::AngleAxisd(pi, axis).toRotationMatrix();
+    const V omega = rotation_log<double>(R);
+    EXPECT_NEAR(omega.norm(), pi, 1e-14);
+    EXPECT_LT(std::min((omega - pi * axis).norm(), (omega + pi * axis).norm()), 1e-13);
+    EXPECT_LT((rotation_exp<double>(omega) - R).norm(), 1e-14);
+  }
+  EXPECT_EQ(rotation_log<double>(M::Identity()), V::Zero());
+}
+
+TEST(NearestLog, IsTheNearestRepresentativeOfTheSameRotation) {
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> u(-15, 15);
+  for (int trial = 0; trial < 200; ++trial) {
+    const V omega = std::uniform_real_distribution<double>(0.01, pi)(rng) * random_unit(rng);
+    const V reference(u(rng), u(rng), u(rng));
+    const V chosen = nearest_log<double>(omega, reference);
+    EXPECT_LT((rotation_exp<double>(chosen) - rotation_exp<double>(omega)).norm(), 1e-13);
+    const V axis = omega.normalized();
+    for (int k = -6; k <= 6; ++k)  // every representative (θ + 2πk) a, k = −1 … the turn the other way
+      EXPECT_LE((chosen - reference).norm(), ((omega.norm() + 2 * pi * k) * axis - reference).norm() + 1e-12);
+  }
+  EXPECT_LT((nearest_log<double>(V(0, 0, 1), V(0, 0, 7)) - V(0, 0, 1 + 2 * pi)).norm(), 1e-15);
+  EXPECT_LT((nearest_log<double>(V(0, 0, 1), V(0, 0, -4)) - V(0, 0, 1 - 2 * pi)).norm(), 1e-15);
+  EXPECT_LT((nearest_log<double>(V::Zero(), V(0, 13, 0)) - V(0, 4 * pi, 0)).norm(), 1e-14);
+  EXPECT_EQ(nearest_log<double>(V::Zero(), V(1, 0, 0)), V::Zero());
+}
+
+TEST(Svd3, HasRotationsAndPositiveDescendingSingularValues) {
+  std::mt19937 rng(5);
+  for (int trial = 0; trial < 200; ++trial) {
+    const M A = random_map(rng);
+    const Svd3<double> d = svd3<double>(A);
+    EXPECT_NEAR(d.U.determinant(), 1, 1e-14);
+    EXPECT_NEAR(d.V.determinant(), 1, 1e-14);
+    EXPECT_GT(d.sigma[2], 0);
+    EXPECT_GE(d.sigma[0], d.sigma[1]);
+    EXPECT_GE(d.sigma[1], d.sigma[2]);
+    EXPECT_LT((d.matrix() - A).norm(), 1e-14 * A.norm());
+    const Polar3<double> polar = polar3(d);
+    EXPECT_LT((polar.R * polar.S - A).norm(), 1e-14 * A.norm());
+  }
+  EXPECT_THROW(svd3<double>(M(Eigen::Vector3d(1, 1, -1).asDiagonal())), std::invalid_argument);
+  EXPECT_THROW(svd3<double>(M::Zero()), std::invalid_argument);
+}
+
+/// The four homotopies of A built from its principal logarithms, and from ω shifted by `turns` turns.
+template <class Check>
+void for_each_homotopy(const M& A, int turns, Check check) {
+  const Svd3<double> d = svd3<double>(A);
+  const V omega = rotation_log<double>(d.U * d.V.transpose());
+  const V branch = omega.norm() > 0 ? V(omega + 2 * pi * turns * omega.normalized()) : omega;
+  check("linear", [&](double t) { return LinearHomotopy3<double>{A}(t); });
+  check("polar", [&](double t) { return PolarHomotopy3<double>{branch, polar3(d).S}(t); });
+  check("exp", [&](double t) { return ExpLogHomotopy3<double>(branch, polar3(d).S)(t); });
+  const SvdHomotopy3<double> s = SvdHomotopy3<double>::of(A);
+  const V omega_U = s.omega_U.norm() > 0 ? V(s.omega_U + 2 * pi * turns * s.omega_U.normalized()) : s.omega_U;
+  check("svd", [&](double t) { return SvdHomotopy3<double>{omega_U, s.sigma, s.omega_V}(t); });
+}
+
+TEST(Homotopies3, StartAtIAndEndAtAOnEveryBranch) {
+  std::mt19937 rng(6);
+  for (int trial = 0; trial < 100; ++trial) {
+    const M A = random_map(rng);
+    for (int turns : {0, 1, -2})
+      for_each_homotopy(A, turns, [&](const char* name, auto path) {
+        EXPECT_LT((path(0.0) - M::Identity()).norm(), 4e-15) << name;  // exp-log's S^0 = V Vᵀ: a few ε
+        EXPECT_LT((path(1.0) - A).norm(), 1e-13 * A.norm()) << name << " turns " << turns;
+      });
+  }
+}
+
+// det A^E(t) = det S^t = exp(t tr log S) > 0 for every t (the exp-log homotopy never inverts).
+TEST(ExpLogHomotopy3, DeterminantIsExpOfTTraceLogS) {
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 100; ++trial) {
+    const M A = random_map(rng);
+    const Svd3<double> d = svd3<double>(A);
+    const ExpLogHomotopy3<double> path = ExpLogHomotopy3<double>::of(A);
+    for (double t : {-0.5, 0.1, 0.25, 0.5, 0.75, 0.9, 1.0, 1.5}) {
+      const double expected = std::exp(t * log_stretch(d).trace());
+      EXPECT_GT(path(t).determinant(), 0);
+      EXPECT_NEAR(path(t).determinant() / expected, 1, 1e-12);  // the product's rounding, entries up to e^{1.5·log 8}
+    }
+  }
+}
+
+// The linear homotopy can leave GL⁺(3): for the half turn about z, A^L(1/2) = diag(0, 0, 1), exactly.
+TEST(LinearHomotopy3, CanPassThroughASingularMap) {
+  const M A = Eigen::Vector3d(-1, -1, 1).asDiagonal();  // a half turn about z
+  EXPECT_EQ(LinearHomotopy3<double>{A}(0.5).determinant(), 0);
+}
+
+TEST(Homotopies3, LongDoubleInstantiates) {
+  const Mat3<long double> A = (Mat3<long double>() << 1, 0.5L, 0, 0, 2, 0, 0.25L, 0, 1).finished();
+  const ExpLogHomotopy3<long double> path = ExpLogHomotopy3<long double>::of(A);
+  EXPECT_LT((path(1.0L) - A).norm(), 1e-17L);
+  EXPECT_LT((PolarHomotopy3<long double>::of(A)(1.0L) - A).norm(), 1e-17L);
+}
+
+}  // namespace local3_test

@@ -1,0 +1,160 @@
+#include "theory/global3/blend3.hpp"
+
+#include "theory/global/parallel_ranges.hpp"
+#include "theory/global3/element_maps3.hpp"
+#include "theory/global3/frame_threads3.hpp"
+#include "theory/global3/local_maps3.hpp"
+#include "theory/global3/mesh3_validation.hpp"
+#include "theory/global3/rotation_branches3.hpp"
+#include "theory/local3/local3.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <string>
+
+namespace affinterp::global3 {
+
+using Eigen::Index;
+using Eigen::Matrix3d;
+using global::RefusedProblem;
+
+struct Blend3::Engine {
+  Blend3Options options;
+  std::vector<Eigen::Matrix3Xd> pose_vertices;
+  std::vector<Eigen::Matrix3Xd> omega;             ///< per pose: ω_{k,i}
+  std::vector<std::vector<Matrix3d>> log_stretch;  ///< per pose: log S_{k,i}
+  PoissonSystem3 system;
+  std::size_t threads;
+
+  Engine(const Mesh3& rest, const std::vector<Mesh3>& poses, Blend3Options o)
+      : options(std::move(o)),
+        system(rest, options.area_weighted, options.constraints, options.back_end),
+        threads(frame_threads3(options.frame_threads, rest)) {
+    const DualGraph3 graph = dual_graph3(rest.elements);
+    for (std::size_t k = 0; k < poses.size(); ++k) {
+      pose_vertices.push_back(poses[k].vertices);
+      decompose(element_maps(rest, poses[k]), graph, k == 0 ? nullptr : &omega.back());
+    }
+  }
+  void decompose(const std::vector<Matrix3d>& maps, const DualGraph3& graph, const Eigen::Matrix3Xd* previous);
+  void maps_at(const Eigen::VectorXd& w, std::span<Matrix3d> out, std::size_t threads_) const;
+  Eigen::Matrix3Xd frame(const Eigen::VectorXd& w, std::size_t threads_, FrameTimings* timings) const;
+};
+
+namespace {
+
+const Mesh3& validated(const Mesh3& rest, const std::vector<Mesh3>& poses) {
+  if (poses.size() < 2) throw RefusedProblem("a blend needs at least two poses, not " + std::to_string(poses.size()));
+  check_reference(rest, "rest");
+  for (std::size_t k = 0; k < poses.size(); ++k) check_pose(rest, poses[k], "pose " + std::to_string(k));
+  return rest;
+}
+
+std::vector<const Eigen::Matrix3Xd*> pointers(const std::vector<Eigen::Matrix3Xd>& poses) {
+  std::vector<const Eigen::Matrix3Xd*> list;
+  for (const auto& pose : poses) list.push_back(&pose);
+  return list;
+}
+
+}  // namespace
+
+void Blend3::Engine::decompose(const std::vector<Matrix3d>& maps, const DualGraph3& graph,
+                               const Eigen::Matrix3Xd* previous) {
+  const auto m = static_cast<Index>(maps.size());
+  Eigen::Matrix3Xd principal(3, m);
+  std::vector<Matrix3d> logs(maps.size());
+  for (Index i = 0; i < m; ++i) {
+    const local3::Svd3<double> d = local3::svd3<double>(maps[static_cast<std::size_t>(i)]);
+    principal.col(i) = local3::rotation_log<double>(d.U * d.V.transpose());
+    logs[static_cast<std::size_t>(i)] = local3::log_stretch(d);
+  }
+  omega.push_back(options.rotation_branch == global::RotationBranch::consistent
+                      ? consistent_logs(graph, principal, previous)
+                      : principal);
+  log_stretch.push_back(std::move(logs));
+}
+
+void Blend3::Engine::maps_at(const Eigen::VectorXd& w, std::span<Matrix3d> out, std::size_t threads_) const {
+  exp_log_maps(
+      [&](Index first, Index last, std::span<Eigen::Vector3d> Omega, std::span<Matrix3d> Lambda) {
+        for (Index i = first; i < last; ++i) {
+          const auto j = static_cast<std::size_t>(i - first);
+          Omega[j].setZero();
+          Lambda[j].setZero();
+          for (std::size_t k = 0; k < omega.size(); ++k) {
+            Omega[j] += w[static_cast<Index>(k)] * omega[k].col(i);
+            Lambda[j] += w[static_cast<Index>(k)] * log_stretch[k][static_cast<std::size_t>(i)];
+          }
+        }
+      },
+      out, threads_);
+}
+
+Eigen::Matrix3Xd Blend3::Engine::frame(const Eigen::VectorXd& w, std::size_t threads_, FrameTimings* timings) const {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  std::vector<Matrix3d> A(log_stretch.front().size());
+  maps_at(w, A, threads_);
+  const auto mapped = Clock::now();
+  PoissonSystem3::Block b = system.right_hand_side(A, threads_);
+  const auto assembled = Clock::now();
+  Eigen::Matrix3Xd v =
+      system.solve(std::move(b), weighted_targets(options.constraints, pointers(pose_vertices), w), threads_);
+  if (timings) {
+    const auto seconds = [](auto from, auto to) { return std::chrono::duration<double>(to - from).count(); };
+    *timings = {seconds(start, mapped), seconds(mapped, assembled), seconds(assembled, Clock::now())};
+  }
+  return v;
+}
+
+Blend3::Blend3(const std::vector<Mesh3>& poses, Blend3Options options)
+    : Blend3(poses.empty() ? Mesh3{} : poses.front(), poses, std::move(options)) {}
+Blend3::Blend3(const Mesh3& rest, const std::vector<Mesh3>& poses, Blend3Options options)
+    : engine_(std::make_unique<Engine>(validated(rest, poses), poses, std::move(options))) {}
+Blend3::~Blend3() = default;
+Blend3::Blend3(Blend3&&) noexcept = default;
+Blend3& Blend3::operator=(Blend3&&) noexcept = default;
+
+void Blend3::require_valid_weights(const Eigen::VectorXd& w) const {
+  if (w.size() != pose_count())
+    throw RefusedProblem("the blend needs " + std::to_string(pose_count()) + " weights, one a pose, not " +
+                         std::to_string(w.size()));
+  if (!w.allFinite()) throw RefusedProblem("the blend weights must be finite");
+  if (!engine_->options.allow_extrapolation && ((w.array() < 0).any() || std::abs(w.sum() - 1) > 1e-9))
+    throw RefusedProblem("the blend weights must be non-negative and sum to 1 (or allow extrapolation)");
+}
+
+Eigen::Matrix3Xd Blend3::vertices_at(const Eigen::VectorXd& w) const {
+  require_valid_weights(w);
+  return engine_->frame(w, engine_->threads, nullptr);
+}
+
+Eigen::Matrix3Xd Blend3::vertices_at(const Eigen::VectorXd& w, FrameTimings& timings) const {
+  require_valid_weights(w);
+  return engine_->frame(w, engine_->threads, &timings);
+}
+
+std::vector<Eigen::Matrix3Xd> Blend3::vertices_at(const std::vector<Eigen::VectorXd>& weights) const {
+  for (const Eigen::VectorXd& w : weights) require_valid_weights(w);
+  std::vector<Eigen::Matrix3Xd> frames(weights.size());
+  global::for_each_range(weights.size(), global::ranges_for(weights.size(), 1),
+                         [&](std::size_t first, std::size_t last) {
+                           for (std::size_t f = first; f < last; ++f)
+                             frames[f] = engine_->frame(weights[f], 1, nullptr);
+                         });
+  return frames;
+}
+
+std::vector<Matrix3d> Blend3::local_maps_at(const Eigen::VectorXd& w) const {
+  require_valid_weights(w);
+  std::vector<Matrix3d> A(engine_->log_stretch.front().size());
+  engine_->maps_at(w, A, engine_->threads);
+  return A;
+}
+
+Index Blend3::pose_count() const { return static_cast<Index>(engine_->omega.size()); }
+const Eigen::Matrix3Xd& Blend3::rotation_logs(Index k) const { return engine_->omega.at(static_cast<std::size_t>(k)); }
+const PoissonSystem3& Blend3::system() const { return engine_->system; }
+const Blend3Options& Blend3::options() const { return engine_->options; }
+
+}  // namespace affinterp::global3

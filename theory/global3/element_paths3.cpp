@@ -1,0 +1,66 @@
+#include "theory/global3/element_paths3.hpp"
+
+#include "theory/global/parallel_ranges.hpp"
+#include "theory/global3/local_maps3.hpp"
+#include "theory/local3/local3.hpp"
+
+namespace affinterp::global3 {
+
+using Eigen::Index;
+using Eigen::Matrix3d;
+using global::LocalHomotopy;
+
+ElementPaths3::ElementPaths3(const std::vector<Matrix3d>& maps, LocalHomotopy homotopy, global::RotationBranch branch,
+                             const DualGraph3& graph)
+    : homotopy_(homotopy) {
+  const auto m = static_cast<Index>(maps.size());
+  Eigen::Matrix3Xd principal(3, m);
+  omega_U_.resize(3, m), sigma_.resize(3, m), omega_V_.resize(3, m);
+  stretch_.resize(maps.size());
+  for (Index i = 0; i < m; ++i) {
+    const local3::Svd3<double> d = local3::svd3<double>(maps[static_cast<std::size_t>(i)]);
+    principal.col(i) = local3::rotation_log<double>(d.U * d.V.transpose());
+    stretch_[static_cast<std::size_t>(i)] =
+        homotopy == LocalHomotopy::exp ? local3::log_stretch(d) : local3::polar3(d).S;
+    omega_U_.col(i) = local3::rotation_log<double>(d.U);
+    sigma_.col(i) = d.sigma;
+    omega_V_.col(i) = local3::rotation_log<double>(d.V.transpose());
+  }
+  omega_ = branch == global::RotationBranch::consistent ? consistent_logs(graph, principal) : principal;
+  for (Index i = 0; i < m; ++i)
+    if (omega_.col(i) != principal.col(i))
+      omega_U_.col(i) =
+          local3::nearest_log<double>(omega_U_.col(i), omega_U_.col(i) + omega_.col(i) - principal.col(i));
+  if (homotopy == LocalHomotopy::linear) A_ = maps;
+}
+
+void ElementPaths3::maps_at(double t, std::span<Matrix3d> out, std::size_t threads) const {
+  if (homotopy_ == LocalHomotopy::exp) {
+    exp_log_maps(
+        [&](Index first, Index last, std::span<Eigen::Vector3d> Omega, std::span<Matrix3d> Lambda) {
+          for (Index i = first; i < last; ++i) {
+            Omega[static_cast<std::size_t>(i - first)] = t * omega_.col(i);
+            Lambda[static_cast<std::size_t>(i - first)] = t * stretch_[static_cast<std::size_t>(i)];
+          }
+        },
+        out, threads);
+    return;
+  }
+  global::for_each_range(out.size(), threads, [&](std::size_t first, std::size_t last) {
+    for (std::size_t s = first; s < last; ++s) {
+      const auto i = static_cast<Index>(s);
+      switch (homotopy_) {
+        case LocalHomotopy::linear:
+          out[s] = local3::LinearHomotopy3<double>{A_[s]}(t);
+          break;
+        case LocalHomotopy::polar:
+          out[s] = local3::PolarHomotopy3<double>{omega_.col(i), stretch_[s]}(t);
+          break;
+        default:
+          out[s] = local3::SvdHomotopy3<double>{omega_U_.col(i), sigma_.col(i), omega_V_.col(i)}(t);
+      }
+    }
+  });
+}
+
+}  // namespace affinterp::global3

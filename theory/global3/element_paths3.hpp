@@ -1,0 +1,42 @@
+#pragma once
+// Each element's local homotopy A_i(t) between I and A_i (theory/local3), as the 3D engine evaluates it for all
+// elements of a frame: the rotation logarithms chosen once (principal, or consistent: rotation_branches3.hpp),
+// the decompositions computed once, and exp-log's S_i^t = exp(t log S_i) for all elements through one batched
+// pass (local_maps3.hpp).
+//
+// Branches per homotopy: polar and exp-log use ω_i, the chosen logarithm of R_i. SVD uses logarithms of U_i and
+// V_iᵀ; with the consistent branch ω_{U,i} is moved to its representative nearest ω_{U,i} + (ω_i − ω_i^principal),
+// the 3D form of the 2D engine's α + (θ_branch − θ) (U_i ≈ R_i where V_i ≈ I); it is not a consistency of U_i's
+// own field, which the SVD's sign and order choices can break between neighbours. Linear has no branch.
+#include "theory/global/options.hpp"
+#include "theory/global3/rotation_branches3.hpp"
+
+#include <Eigen/Core>
+
+#include <span>
+#include <vector>
+
+namespace affinterp::global3 {
+
+class ElementPaths3 {
+ public:
+  /// A_i ∈ GL⁺(3) for each element (element_maps3.hpp); `graph` the elements' dual graph. Throws
+  /// std::invalid_argument if some det A_i ≤ 0.
+  ElementPaths3(const std::vector<Eigen::Matrix3d>& maps, global::LocalHomotopy homotopy, global::RotationBranch branch,
+                const DualGraph3& graph);
+
+  /// out[i] = A_i(t) for every element, on up to `threads` threads; the same bits on any number.
+  void maps_at(double t, std::span<Eigen::Matrix3d> out, std::size_t threads) const;
+  /// ω_i (column i), the logarithm of R_i in use.
+  const Eigen::Matrix3Xd& rotation_logs() const { return omega_; }
+  Eigen::Index element_count() const { return omega_.cols(); }
+
+ private:
+  global::LocalHomotopy homotopy_;
+  std::vector<Eigen::Matrix3d> A_;              ///< linear
+  Eigen::Matrix3Xd omega_;                      ///< polar, exp-log (and reported for every homotopy)
+  std::vector<Eigen::Matrix3d> stretch_;        ///< polar: S_i; exp-log: log S_i
+  Eigen::Matrix3Xd omega_U_, sigma_, omega_V_;  ///< svd
+};
+
+}  // namespace affinterp::global3

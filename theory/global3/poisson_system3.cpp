@@ -1,0 +1,195 @@
+#include "theory/global3/poisson_system3.hpp"
+
+#include "theory/global/parallel_ranges.hpp"
+#include "theory/global/refused_problem.hpp"
+#include "theory/global3/element_maps3.hpp"
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <string>
+
+namespace affinterp::global3 {
+
+using Eigen::Index;
+using Eigen::Matrix3d;
+using global::RefusedProblem;
+
+struct PoissonSystem3::Data {
+  Eigen::MatrixXi elements;
+  Index n = 0;
+  Eigen::VectorXd weights;
+  std::vector<Eigen::Matrix<double, 4, 3>> W;  ///< W_i = w_i C E_i⁺ (rows beyond d + 1 zero)
+  std::vector<Matrix3d> edges;                 ///< E_i (columns beyond d zero)
+  std::vector<Matrix3d> pinv;                  ///< E_i⁺ (rows beyond d zero)
+  std::vector<int> star_start, star_element;   ///< each vertex's (element, corner) pairs, compressed rows
+  std::vector<unsigned char> star_corner;
+  Constraints3 constraints;
+  std::unique_ptr<global::SparseFactor<double>> factor;
+  Eigen::VectorXd z;  ///< K⁻¹ 1, for Sherman–Morrison (pins and barycentre)
+};
+
+namespace {
+
+/// C: the (d+1) × d map from an element's edges to its corners (row 0 all −1, then the identity).
+Eigen::MatrixXd edges_to_corners(int d) {
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(d + 1, d);
+  C.row(0).setConstant(-1);
+  C.bottomRows(d).setIdentity();
+  return C;
+}
+
+void require_constraints(const Constraints3& constraints, Index n) {
+  for (const global::PinnedVertex& pin : constraints.pinned) {
+    if (pin.vertex < 0 || pin.vertex >= n)
+      throw RefusedProblem("pinned vertex " + std::to_string(pin.vertex) + " is out of range");
+    if (!(pin.weight > 0) || !std::isfinite(pin.weight))
+      throw RefusedProblem("pinned vertex " + std::to_string(pin.vertex) + ": the weight must be positive and finite");
+  }
+  if (constraints.barycentre &&
+      (!(constraints.barycentre->weight > 0) || !std::isfinite(constraints.barycentre->weight)))
+    throw RefusedProblem("barycentre locus: the weight must be positive and finite");
+  if (constraints.pinned.empty() && !constraints.barycentre)
+    throw RefusedProblem("nothing fixes the translation: give a barycentre locus or a pinned vertex");
+}
+
+/// The vertex stars of `elements`: (element, corner) pairs of each vertex in increasing element order.
+void build_stars(PoissonSystem3::Data& data) {
+  data.star_start.assign(static_cast<std::size_t>(data.n) + 1, 0);
+  for (Index i = 0; i < data.elements.cols(); ++i)
+    for (Index c = 0; c < data.elements.rows(); ++c)
+      ++data.star_start[static_cast<std::size_t>(data.elements(c, i)) + 1];
+  for (std::size_t k = 0; k < static_cast<std::size_t>(data.n); ++k) data.star_start[k + 1] += data.star_start[k];
+  std::vector<int> next(data.star_start.begin(), data.star_start.end() - 1);
+  data.star_element.resize(static_cast<std::size_t>(data.elements.size()));
+  data.star_corner.resize(data.star_element.size());
+  for (Index i = 0; i < data.elements.cols(); ++i)
+    for (Index c = 0; c < data.elements.rows(); ++c) {
+      const auto slot = static_cast<std::size_t>(next[static_cast<std::size_t>(data.elements(c, i))]++);
+      data.star_element[slot] = static_cast<int>(i);
+      data.star_corner[slot] = static_cast<unsigned char>(c);
+    }
+}
+
+/// W_i, E_i⁺ and L's triplets (w_i C M_i Cᵀ) of every element.
+std::vector<Eigen::Triplet<double>> element_terms(const Mesh3& rest, PoissonSystem3::Data& data) {
+  const int d = rest.corners() - 1;
+  const Eigen::MatrixXd C = edges_to_corners(d);
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(static_cast<std::size_t>(rest.element_count() * (d + 1) * (d + 1)));
+  data.W.assign(static_cast<std::size_t>(rest.element_count()), Eigen::Matrix<double, 4, 3>::Zero());
+  data.pinv.assign(data.W.size(), Matrix3d::Zero());
+  data.edges.assign(data.W.size(), Matrix3d::Zero());
+  for (Index i = 0; i < rest.element_count(); ++i) {
+    const Eigen::MatrixXd E = element_edges(rest, i);
+    const Eigen::MatrixXd M = (E.transpose() * E).inverse();
+    const Eigen::MatrixXd pinv = M * E.transpose();
+    const double w = data.weights[i];
+    data.pinv[static_cast<std::size_t>(i)].topRows(d) = pinv;
+    data.edges[static_cast<std::size_t>(i)].leftCols(d) = E;
+    data.W[static_cast<std::size_t>(i)].topRows(d + 1) = w * C * pinv;
+    const Eigen::MatrixXd K = w * C * M * C.transpose();
+    for (int a = 0; a <= d; ++a)
+      for (int b = 0; b <= d; ++b) triplets.emplace_back(rest.elements(a, i), rest.elements(b, i), K(a, b));
+  }
+  return triplets;
+}
+
+/// K = L + Σ c_k e_k e_kᵀ (+ s e_0 e_0ᵀ without pins), analysed and factorised.
+void factorise_system(PoissonSystem3::Data& data, std::vector<Eigen::Triplet<double>> triplets,
+                      std::optional<global::SparseBackEnd> back_end) {
+  for (const global::PinnedVertex& pin : data.constraints.pinned)
+    triplets.emplace_back(pin.vertex, pin.vertex, pin.weight);
+  Eigen::SparseMatrix<double> K(data.n, data.n);
+  K.setFromTriplets(triplets.begin(), triplets.end());
+  if (data.constraints.pinned.empty()) K.coeffRef(0, 0) += K.diagonal().mean();  // the gauge: v_0 = 0
+  data.factor = back_end ? global::make_sparse_factor<double>(*back_end) : global::make_sparse_factor<double>(data.n);
+  data.factor->analyse(K);
+  if (!data.factor->factorise(K, global::frame_threads(static_cast<std::size_t>(data.n), true)))
+    throw RefusedProblem("the E^F system is singular: its minimiser is not unique");
+  if (!data.constraints.pinned.empty() && data.constraints.barycentre) {
+    PoissonSystem3::Block ones = PoissonSystem3::Block::Ones(data.n, 1);
+    data.factor->solve_in_place(ones, 1);
+    data.z = ones.col(0);
+  }
+}
+
+}  // namespace
+
+PoissonSystem3::PoissonSystem3(const Mesh3& rest, bool area_weighted, const Constraints3& constraints,
+                               std::optional<global::SparseBackEnd> back_end)
+    : data_(std::make_unique<Data>()) {
+  require_constraints(constraints, rest.vertex_count());
+  data_->elements = rest.elements;
+  data_->n = rest.vertex_count();
+  data_->constraints = constraints;
+  data_->weights = area_weighted ? element_measures(rest) : Eigen::VectorXd::Ones(rest.element_count());
+  build_stars(*data_);
+  factorise_system(*data_, element_terms(rest, *data_), back_end);
+}
+
+PoissonSystem3::~PoissonSystem3() = default;
+PoissonSystem3::PoissonSystem3(PoissonSystem3&&) noexcept = default;
+PoissonSystem3& PoissonSystem3::operator=(PoissonSystem3&&) noexcept = default;
+
+PoissonSystem3::Block PoissonSystem3::right_hand_side(std::span<const Matrix3d> A, std::size_t threads) const {
+  const Data& data = *data_;
+  Block b(data.n, 3);
+  global::for_each_range(static_cast<std::size_t>(data.n), threads, [&](std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k < last; ++k) {
+      Eigen::RowVector3d row = Eigen::RowVector3d::Zero();
+      for (int s = data.star_start[k]; s < data.star_start[k + 1]; ++s) {
+        const auto i = static_cast<std::size_t>(data.star_element[static_cast<std::size_t>(s)]);
+        row += data.W[i].row(data.star_corner[static_cast<std::size_t>(s)]) * A[i].transpose();
+      }
+      b.row(static_cast<Index>(k)) = row;
+    }
+  });
+  return b;
+}
+
+Eigen::Matrix3Xd PoissonSystem3::solve(Block b, const ConstraintTargets3& targets, std::size_t threads) const {
+  const Data& data = *data_;
+  const auto& pinned = data.constraints.pinned;
+  for (std::size_t j = 0; j < pinned.size(); ++j)
+    b.row(pinned[j].vertex) += pinned[j].weight * targets.pinned.col(static_cast<Index>(j)).transpose();
+  const bool sherman_morrison = !pinned.empty() && data.constraints.barycentre;
+  const double n = static_cast<double>(data.n);
+  if (sherman_morrison) b.rowwise() += (data.constraints.barycentre->weight / n) * targets.barycentre.transpose();
+  data.factor->solve_in_place(b, threads);
+  if (sherman_morrison) {  // (K + c 11ᵀ)⁻¹ r = y − z c (1ᵀy) / (1 + c 1ᵀz), c = c_o/n²
+    const double c = data.constraints.barycentre->weight / (n * n);
+    const Eigen::RowVector3d sum_y = b.colwise().sum();
+    b -= data.z * (c * sum_y / (1 + c * data.z.sum()));
+  } else if (pinned.empty()) {
+    const Eigen::RowVector3d shift = targets.barycentre.transpose() - b.colwise().mean();
+    b.rowwise() += shift;
+  }
+  return b.transpose();
+}
+
+double PoissonSystem3::energy(std::span<const Matrix3d> A, const Eigen::Matrix3Xd& v,
+                              const ConstraintTargets3& targets) const {
+  const Data& data = *data_;
+  double E = 0;
+  for (Index i = 0; i < data.elements.cols(); ++i) {
+    Matrix3d X = Matrix3d::Zero();  // the frame's edges, the columns beyond d zero as E_i⁺'s rows are
+    for (Index c = 1; c < data.elements.rows(); ++c)
+      X.col(c - 1) = v.col(data.elements(c, i)) - v.col(data.elements(0, i));
+    const auto s = static_cast<std::size_t>(i);
+    E += data.weights[i] * ((X - A[s] * data.edges[s]) * data.pinv[s]).squaredNorm();
+  }
+  const auto& pinned = data.constraints.pinned;
+  for (std::size_t j = 0; j < pinned.size(); ++j)
+    E += pinned[j].weight * (v.col(pinned[j].vertex) - targets.pinned.col(static_cast<Index>(j))).squaredNorm();
+  if (data.constraints.barycentre)
+    E += data.constraints.barycentre->weight * (v.rowwise().mean() - targets.barycentre).squaredNorm();
+  return E;
+}
+
+Index PoissonSystem3::vertex_count() const { return data_->n; }
+const Eigen::VectorXd& PoissonSystem3::weights() const { return data_->weights; }
+const Constraints3& PoissonSystem3::constraints() const { return data_->constraints; }
+global::SparseBackEnd PoissonSystem3::back_end() const { return data_->factor->back_end(); }
+
+}  // namespace affinterp::global3

@@ -1,0 +1,70 @@
+#pragma once
+// Rotations of ℝ³ by their axis-angle vector ω (R = exp [ω]×, the rotation by |ω| about ω/|ω|): the
+// exponential by Rodrigues' formula and its principal logarithm |ω| ≤ π, the 3D counterparts of
+// theory/local/rotation.hpp's R_θ and principal angle. Templated over the scalar (double, long double, and
+// Boost.Multiprecision floats with ADL sin/cos/atan2/sqrt).
+#include <Eigen/Core>
+#include <boost/math/constants/constants.hpp>
+
+#include <cmath>
+
+namespace affinterp::local3 {
+
+template <class Scalar>
+using Mat3 = Eigen::Matrix<Scalar, 3, 3>;
+template <class Scalar>
+using Vec3 = Eigen::Matrix<Scalar, 3, 1>;
+
+template <class Scalar>
+Scalar pi() {
+  return boost::math::constants::pi<Scalar>();
+}
+
+/// [ω]×, the skew-symmetric matrix with [ω]× v = ω × v.
+template <class Scalar>
+Mat3<Scalar> cross_matrix(const Vec3<Scalar>& omega) {
+  Mat3<Scalar> K;
+  K << Scalar(0), -omega.z(), omega.y(), omega.z(), Scalar(0), -omega.x(), -omega.y(), omega.x(), Scalar(0);
+  return K;
+}
+
+/// exp [ω]× = I + (sin θ/θ) K + ((1 − cos θ)/θ²) K², θ = |ω|, K = [ω]× (Rodrigues). Any |ω|, so that a branch
+/// ω + 2πk ω/|ω| gives the same rotation. (1 − cos θ)/θ² is evaluated as ½ (sin(θ/2)/(θ/2))², which, unlike
+/// 1 − cos θ, keeps its relative accuracy as θ → 0; both coefficients are their limits at θ = 0.
+template <class Scalar>
+Mat3<Scalar> rotation_exp(const Vec3<Scalar>& omega) {
+  using std::sin;
+  const Scalar theta = omega.norm();
+  const Mat3<Scalar> K = cross_matrix(omega);
+  Scalar a(1), b(0.5);
+  if (theta > Scalar(0)) {
+    const Scalar half = theta / 2, sinc_half = sin(half) / half;
+    a = sin(theta) / theta;
+    b = sinc_half * sinc_half / 2;
+  }
+  return Mat3<Scalar>::Identity() + a * K + b * (K * K);
+}
+
+/// The principal logarithm of R ∈ SO(3): ω with exp [ω]× = R and θ = |ω| ∈ [0, π]. θ = atan2(|v|, c) with
+/// c = (tr R − 1)/2 = cos θ and v = vee(R − Rᵀ)/2 = sin θ · axis, accurate at every angle. The axis comes from v
+/// where c ≥ 0; where c < 0 (θ > π/2) from the symmetric part (R + Rᵀ)/2 − cI = (1 − c) axis axisᵀ, whose largest
+/// column does not lose accuracy as θ → π (v → 0 does), with its sign taken from v. At θ = π exactly both ±π·axis
+/// are principal; the one whose largest-magnitude component is positive is returned.
+template <class Scalar>
+Vec3<Scalar> rotation_log(const Mat3<Scalar>& R) {
+  using std::atan2;
+  using std::sqrt;
+  const Vec3<Scalar> v{(R(2, 1) - R(1, 2)) / 2, (R(0, 2) - R(2, 0)) / 2, (R(1, 0) - R(0, 1)) / 2};
+  const Scalar c = (R.trace() - 1) / 2, s = v.norm();
+  const Scalar theta = atan2(s, c);
+  if (c >= Scalar(0)) return s > Scalar(0) ? Vec3<Scalar>((theta / s) * v) : Vec3<Scalar>::Zero();
+  const Mat3<Scalar> B = (R + R.transpose()) / 2 - c * Mat3<Scalar>::Identity();
+  Eigen::Index j = 0;
+  B.diagonal().maxCoeff(&j);
+  Vec3<Scalar> axis = B.col(j) / sqrt(B(j, j) * (1 - c));
+  axis.normalize();
+  if (axis.dot(v) < Scalar(0)) axis = -axis;
+  return theta * axis;
+}
+
+}  // namespace affinterp::local3
