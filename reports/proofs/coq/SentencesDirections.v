@@ -9,7 +9,7 @@
      and the witness m is its slope.
    Each theorem states its stored sentence exactly as checks/proofs/smt2_to_coq.py reads it. *)
 Require Import Reals Psatz Lra.
-Require Import Affinterp.Defs Affinterp.L8 Affinterp.L9.
+Require Import Affinterp.Defs Affinterp.Small Affinterp.L8 Affinterp.L9.
 Open Scope R_scope.
 
 Lemma no_sign_change (x y h a b : R) :
