@@ -3,6 +3,7 @@
 #include "experiments/claims/values.hpp"
 #include "experiments/proofs/ginac_scalar.hpp"
 #include "experiments/proofs/identity.hpp"
+#include "experiments/proofs/step_nodes.hpp"
 #include "theory/exact/rational.hpp"
 #include "theory/local/goodness.hpp"
 #include "theory/local/local.hpp"
@@ -39,14 +40,18 @@ Proof proof(const ClaimContext& ctx) {
   using X = GiNaC::ex;
   const GiNaC::symbol t("t");
   const affinterp::local::LinearHomotopy<X> A_L{Mat2<X>(-affinterp::local::identity2<X>())};
+  // The steps left to the checkers: t = 1/2 substituted into A^L(t), the determinants of A^L(t) and of A.
+  const GiNaC::matrix A_t = proofs::to_ginac<2, 2>(A_L(t));
+  GiNaC::matrix half_way(2, 2);
+  for (unsigned k = 0; k < 4; ++k) half_way(k / 2, k % 2) = proofs::substitution(A_t(k / 2, k % 2), t, X(1) / 2);
   const std::vector<proofs::Identity> identities = {
-      {"collapse", "A^L(1/2) = 0 for A = −I", proofs::to_ginac<2, 2>(A_L(X(1) / 2)),
-       proofs::to_ginac<2, 2>(Mat2<X>::Constant(X(0)))},
-      {"determinant", "det A^L(t) = (1 − 2t)² for A = −I", det2<X>(A_L(t)), GiNaC::pow(1 - 2 * t, 2)},
-      {"admissible", "det(−I) = 1 > 0", det2<X>(A_L.A), X(1)},
+      {"collapse", "A^L(1/2) = 0 for A = −I", half_way, proofs::to_ginac<2, 2>(Mat2<X>::Constant(X(0)))},
+      {"determinant", "det A^L(t) = (1 − 2t)² for A = −I", proofs::determinant_of(A_t), GiNaC::pow(1 - 2 * t, 2)},
+      {"admissible", "det(−I) = 1 > 0", proofs::determinant_of(proofs::to_ginac<2, 2>(A_L.A)), X(1)},
   };
   return proofs::identity_proof("A = −I and every real t",
-                                "identities over a symbol t from theory/local's LinearHomotopy and det2",
+                                "identities over a symbol t from theory/local's LinearHomotopy, the substitution t = 1/2 "
+                                "and the determinants performed by each checker",
                                 proofs::prove_identities(identities, ctx.proof_files()));
 }
 
