@@ -4,6 +4,7 @@
 #include "experiments/claims/local/rotation_lemma.hpp"
 #include "experiments/proofs/ginac_scalar.hpp"
 #include "experiments/proofs/identity.hpp"
+#include "experiments/proofs/step_nodes.hpp"
 #include "theory/local/local.hpp"
 
 #include <algorithm>
@@ -44,13 +45,15 @@ Proof proof(const ClaimContext& ctx) {
   const GiNaC::symbol alpha("alpha"), beta("beta"), x("x"), y("y");
   const affinterp::local::Svd<X> A_svd{alpha, x, y, beta}, S_eigen{-X(beta), x, y, beta};
   const affinterp::local::Polar<X> polar = affinterp::local::polar_from_svd(A_svd);
-  // Kaji eq. (3) as ExpLogHomotopy::operator() composes it: A^E(t) = R_{tθ} S^t.
-  const auto A_E = [&](const X& t) { return Mat2<X>(rotation<X>(t * polar.theta).lazyProduct(spd_power(S_eigen, t))); };
   RotationLemma lemma;
   const auto rational = [&lemma](const Mat2<X>& M) { return lemma(proofs::to_ginac(M)); };
+  // Kaji eq. (3) as ExpLogHomotopy::operator() composes it: A^E(t) = R_{tθ} S^t, the product left to the checkers.
+  const auto A_E = [&](const X& t) {
+    return proofs::product(rational(Mat2<X>(rotation<X>(t * polar.theta))), rational(spd_power(S_eigen, t)));
+  };
   const std::vector<proofs::Identity> identities = {
-      {"start", "R_{0·θ} S^0 = I", rational(A_E(X(0))), proofs::to_ginac(affinterp::local::identity2<X>())},
-      {"end", "R_{1·θ} S^1 = R_α D R_β = A", rational(A_E(X(1))), rational(A_svd.matrix())},
+      {"start", "R_{0·θ} S^0 = I", A_E(X(0)), proofs::to_ginac(affinterp::local::identity2<X>())},
+      {"end", "R_{1·θ} S^1 = R_α D R_β = A", A_E(X(1)), rational(A_svd.matrix())},
   };
   return proofs::identity_proof(
       "every A = R_α D R_β (x ≥ y > 0, α, β real) and every representative θ of its polar angle",
