@@ -4,6 +4,7 @@
 #include "experiments/claims/local/simple_values.hpp"
 #include "experiments/proofs/ginac_scalar.hpp"
 #include "experiments/proofs/identity.hpp"
+#include "experiments/proofs/step_nodes.hpp"
 #include "theory/local/local.hpp"
 
 #include <algorithm>
@@ -54,19 +55,21 @@ Proof proof(const ClaimContext& ctx) {
                 D = A_svd.D(), S = polar.S;
   RotationLemma lemma;
   const auto rational = [&lemma](const Mat2<X>& M) { return lemma(proofs::to_ginac(M)); };
+  // The products, transposes and determinants are left to the checkers; S and S^t are theory/local's.
+  const auto times = [&rational](const Mat2<X>& a, const Mat2<X>& b) { return proofs::product(rational(a), rational(b)); };
+  const GiNaC::ex R_minus_beta_D_R_beta =
+      proofs::product({rational(R_minus_beta), rational(D), rational(R_beta)});  // S by its definition
   const std::vector<proofs::Identity> identities = {
-      {"polar-product", "R_θ S = R_α D R_β with θ = α + β, S = R_{−β} D R_β", rational(R_theta.lazyProduct(S)),
-       rational(A_svd.matrix())},
-      {"symmetric", "S₁₂ = S₂₁", lemma(S(0, 1)), lemma(S(1, 0))},
+      {"polar-product", "R_θ S = R_α D R_β with θ = α + β, S = R_{−β} D R_β", times(R_theta, S),
+       proofs::product({rational(affinterp::local::rotation<X>(alpha)), rational(D), rational(R_beta)})},
+      {"symmetric", "S = S^T", rational(S), proofs::transposed(rational(S))},
       {"trace", "tr S = x + y", lemma(S.trace()), x + y},
-      {"determinant", "det S = x y", lemma(det2(S)), x * y},
-      {"orthogonal", "R_{−β} R_β = I", rational(R_minus_beta.lazyProduct(R_beta)),
-       proofs::to_ginac(affinterp::local::identity2<X>())},
-      {"eigenvectors", "S R_{−β} = R_{−β} D", rational(S.lazyProduct(R_minus_beta)),
-       rational(R_minus_beta.lazyProduct(D))},
-      {"power-one", "S^t at t = 1 is S", rational(affinterp::local::spd_power(S_eigen, X(1))), rational(S)},
-      {"power-two", "S^t at t = 2 is S S", rational(affinterp::local::spd_power(S_eigen, X(2))),
-       rational(S.lazyProduct(S))},
+      {"determinant", "det S = x y", proofs::determinant_of(rational(S)), x * y},
+      {"orthogonal", "R_{−β} R_β = I", times(R_minus_beta, R_beta), proofs::to_ginac(affinterp::local::identity2<X>())},
+      {"eigenvectors", "S R_{−β} = R_{−β} D", times(S, R_minus_beta), times(R_minus_beta, D)},
+      {"power-one", "S^t at t = 1 is S = R_{−β} D R_β", rational(affinterp::local::spd_power(S_eigen, X(1))),
+       R_minus_beta_D_R_beta},
+      {"power-two", "S^t at t = 2 is S S", rational(affinterp::local::spd_power(S_eigen, X(2))), times(S, S)},
   };
   return proofs::identity_proof(
       "every A = R_α D R_β, D = diag(x, y), x ≥ y > 0, α and β real",
