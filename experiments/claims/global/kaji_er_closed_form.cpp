@@ -4,6 +4,7 @@
 #include "experiments/claims/proof_strength.hpp"
 #include "experiments/claims/values.hpp"
 #include "experiments/proofs/identity.hpp"
+#include "experiments/proofs/step_nodes.hpp"
 #include "theory/local/rotation.hpp"
 
 namespace affinterp::claims::kaji_er_closed_form {
@@ -63,14 +64,19 @@ Proof proof(const ClaimContext& ctx) {
   const GiNaC::ex nA = symbolic_er::norm2(p.A), a = symbolic_er::inner(p.A, p.B), j = symbolic_er::inner_J(p.A, p.B);
   const Mat2X residual = symbolic_er::similarity(x, y).lazyProduct(p.A) - p.B;
   const Mat2X sR = local::scaled(GiNaC::ex(s), local::rotation<GiNaC::ex>(delta));
+  // xI + yJ at (x, y) = (s cos δ, s sin δ): the substitution left to the checkers.
+  const GiNaC::matrix xI_yJ = proofs::to_ginac(symbolic_er::similarity(x, y));
+  GiNaC::matrix at_polar(2, 2);
+  for (unsigned k = 0; k < 4; ++k)
+    at_polar(k / 2, k % 2) =
+        proofs::substitution(xI_yJ(k / 2, k % 2), {{x, s * GiNaC::cos(delta)}, {y, s * GiNaC::sin(delta)}});
   const std::vector<proofs::Identity> identities = {
       {"complete-square", "‖A‖²‖(xI + yJ)A − B‖² = (‖A‖²x − ⟨A,B⟩)² + (‖A‖²y − ⟨JA,B⟩)² + ‖A‖²‖B‖² − ⟨A,B⟩² − ⟨JA,B⟩²",
        nA * residual.squaredNorm(),
        GiNaC::pow(nA * x - a, 2) + GiNaC::pow(nA * y - j, 2) + nA * p.B.squaredNorm() - a * a - j * j},
       {"printed-form", "‖A‖² E^R(A, B) = ‖A‖²‖B‖² − ⟨A,B⟩² − ⟨JA,B⟩², E^R = ‖B‖² − (‖BAᵀ‖² + 2 det BAᵀ)/‖A‖²",
        nA * symbolic_er::E_R(p.A, p.B), nA * p.B.squaredNorm() - a * a - j * j},
-      {"similarity", "s R_δ = (s cos δ) I + (s sin δ) J", proofs::to_ginac(sR),
-       proofs::to_ginac(symbolic_er::similarity(s * GiNaC::cos(delta), s * GiNaC::sin(delta)))},
+      {"similarity", "s R_δ = (s cos δ) I + (s sin δ) J", proofs::to_ginac(sR), at_polar},
   };
   return proofs::identity_proof(
       "all real 2×2 A ≠ 0 and B",
