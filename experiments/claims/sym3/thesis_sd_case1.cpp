@@ -3,6 +3,7 @@
 #include "experiments/claims/sym3/exact_spectrum.hpp"
 #include "experiments/claims/sym3/sd_sweep.hpp"
 #include "experiments/proofs/identity.hpp"
+#include "experiments/proofs/step_nodes.hpp"
 #include "theory/sym3/spectral_decomposition.hpp"
 
 namespace affinterp::claims::sym3::thesis_sd_case1 {
@@ -30,14 +31,16 @@ using exact::Real100;
 
 /// xλ1² + yλ1 + z = e^{λ1} with theory/sym3's case-1 x, y, z over a symbol λ1.
 Proof proof(const ClaimContext& ctx) {
-  const GiNaC::symbol l1("l1");
+  const GiNaC::symbol l1("l1"), lambda("lambda");
   const auto c = affinterp::sym3::sd_case1<GiNaC::ex>(l1);
+  // p(λ) = xλ² + yλ + z at λ = l1: the substitution left to the checkers.
+  const GiNaC::ex p_at_l1 = proofs::substitution(c.x * lambda * lambda + c.y * lambda + c.z, lambda, l1);
   return proofs::identity_proof(
       "every real λ1 (symmetric S with a triple eigenvalue, i.e. S = λ1 E)",
       "a rational identity in λ1 and e^λ1 (an independent variable on the grid) from theory/sym3's case 1 over "
       "symbols; exp S = xS² + yS + zE follows by the spectral theorem",
       {proofs::prove_identity(
-          {"interpolates-at-l1", "x l1² + y l1 + z = exp(l1)", c.x * l1 * l1 + c.y * l1 + c.z, GiNaC::exp(l1)},
+          {"interpolates-at-l1", "x l1² + y l1 + z = exp(l1)", p_at_l1, GiNaC::exp(l1)},
           ctx.proof_files())});
 }
 
