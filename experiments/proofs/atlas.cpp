@@ -1,5 +1,6 @@
 #include "experiments/proofs/atlas.hpp"
 
+#include "experiments/proofs/atlas3.hpp"
 #include "theory/local/goodness.hpp"
 #include "theory/logic/condition_parser.hpp"
 
@@ -79,7 +80,17 @@ std::string_view to_string(Homotopy h) {
   return "?";
 }
 
-std::string_view to_string(Notion n) { return n == Notion::area ? "area" : "norm"; }
+std::string_view to_string(Notion n) {
+  switch (n) {
+    case Notion::area:
+      return "area";
+    case Notion::norm:
+      return "norm";
+    case Notion::volume:
+      return "volume";
+  }
+  return "?";
+}
 
 std::string AtlasCell::id() const { return std::string(to_string(homotopy)) + "." + std::string(to_string(notion)); }
 
@@ -98,6 +109,7 @@ const AtlasCell& atlas_cell(Homotopy h, Notion n) {
 
 std::optional<bool> suite_says_good(const AtlasCell& cell, const logic::Point& p) {
   if (!logic::holds(cell.domain, p)) throw std::invalid_argument("suite_says_good(): outside the domain");
+  if (cell.dimension == 3) return suite_says_good3(cell, p);
   const auto at = [&](const char* name) { return p.at(name); };
   std::optional<Mat2<Q>> B;  // A(t) = U(t)((1−t)I + tB)V(t) with det- and norm-preserving U, V
   switch (cell.homotopy) {

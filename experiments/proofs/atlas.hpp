@@ -20,10 +20,10 @@
 namespace affinterp::proofs {
 
 enum class Homotopy { linear, svd, polar, exp_log };
-enum class Notion { area, norm };
+enum class Notion { area, norm, volume };  ///< volume: the 3D cells (atlas3.hpp)
 
 std::string_view to_string(Homotopy h);  ///< "linear", "svd", "polar", "exp-log"
-std::string_view to_string(Notion n);    ///< "area", "norm"
+std::string_view to_string(Notion n);    ///< "area", "norm", "volume"
 
 struct AtlasCell {
   Homotopy homotopy;
@@ -34,6 +34,7 @@ struct AtlasCell {
   std::string domain_words;
   std::string condition;        ///< the exact region, in the decide grammar (proved: experiments/claims/atlas)
   std::string condition_words;  ///< the same, in words
+  int dimension = 2;            ///< 2: the 2×2 atlas here; 3: the 3×3 atlas (atlas3.hpp)
 
   std::string id() const;  ///< "linear.area", "exp-log.norm"
   logic::Formula condition_formula() const;
@@ -43,7 +44,8 @@ const AtlasCell& atlas_cell(Homotopy h, Notion n);
 const std::vector<AtlasCell>& atlas_cells();
 
 /// Whether the homotopy is good at `p` by the suite's own exact decider (theory/local/goodness.hpp: linear and
-/// polar area and norm, svd area), or nullopt for the cells it has none for (svd norm, exp-log).
+/// polar area and norm, svd area; goodness3.hpp for the 3D cells, atlas3.hpp), or nullopt for the cells it has
+/// none for (svd norm, exp-log in 2D) or, in 3D, where its certificates do not reach.
 std::optional<bool> suite_says_good(const AtlasCell& cell, const logic::Point& p);
 
 }  // namespace affinterp::proofs
