@@ -65,7 +65,7 @@ TEST(PooledMachines, AStraddlingRunOfAnAgreeingMachineIsReproducedPooled) {
   runs.push_back(run("noisy", "A", 4.4, 0.25));
   const sym3::RunsDecision decision = sym3::decide_runs(runs, {kReading}, "test");
   EXPECT_EQ(decision.per_run.back(), V::inconclusive);
-  EXPECT_EQ(across_runs(decision.per_run), V::inconclusive) << "the old rule, run by run";
+  EXPECT_EQ(across_machines(decision.per_run), V::inconclusive) << "each run a machine of its own (the old rule)";
   ASSERT_EQ(decision.per_machine.size(), 1u);
   EXPECT_EQ(decision.per_machine[0], V::reproduced) << decision.machine_table.dump();
   EXPECT_EQ(decision.verdict, V::reproduced);
@@ -80,7 +80,7 @@ TEST(PooledMachines, MachinesOnOppositeSidesAreMachineDependent) {
   // The same four runs on one machine: the runs disagree, but one machine cannot depend on itself.
   for (bench::RecordedRun& r : runs) r.machine["cpu"] = "A";
   const sym3::RunsDecision one = sym3::decide_runs(runs, {kReading}, "test");
-  EXPECT_EQ(across_runs(one.per_run), V::machine_dependent) << "the old rule, run by run";
+  EXPECT_EQ(across_machines(one.per_run), V::machine_dependent) << "each run a machine of its own (the old rule)";
   EXPECT_NE(one.verdict, V::machine_dependent);
 }
 

@@ -1,7 +1,7 @@
-// The history of benchmark runs (experiments/bench/history.hpp) and the verdicts across it: the rule the engine's
-// targets take run by run (experiments/claims/speed_verdict.hpp, across_runs: every run agreeing gives its
-// verdict, a reproduced run beside a not-reproduced one gives machine-dependent, undecided runs beside agreeing
-// ones leave it inconclusive), and the speed claims on history entries of different machines (each a machine of
+// The history of benchmark runs (experiments/bench/history.hpp) and the verdicts across it: the rule across
+// machines (experiments/claims/speed_verdict.hpp, across_machines: every machine agreeing gives its verdict, a
+// reproduced machine beside a not-reproduced one gives machine-dependent, undecided machines beside agreeing ones
+// leave it inconclusive), and the speed claims on history entries of different machines (each a machine of
 // one run, decided as across_machines decides machines); on synthetic history entries and benchmark files, merged
 // from whole processes and recorded once, with their repetitions.
 #include "experiments/bench/history.hpp"
@@ -23,23 +23,23 @@ namespace {
 namespace fs = std::filesystem;
 using V = Verdict;
 
-Verdict across(std::vector<Verdict> runs) { return across_runs(runs); }
+Verdict across(std::vector<Verdict> machines) { return across_machines(machines); }
 
-TEST(AcrossRuns, EveryRunAgreeingGivesItsVerdict) {
+TEST(AcrossMachines, EveryMachineAgreeingGivesItsVerdict) {
   EXPECT_EQ(across({V::reproduced}), V::reproduced);
   EXPECT_EQ(across({V::reproduced, V::reproduced, V::reproduced}), V::reproduced);
   EXPECT_EQ(across({V::not_reproduced, V::not_reproduced}), V::not_reproduced);
   EXPECT_EQ(across({V::inconclusive, V::inconclusive}), V::inconclusive);
 }
 
-TEST(AcrossRuns, ReproducedBesideNotReproducedIsMachineDependent) {
+TEST(AcrossMachines, ReproducedBesideNotReproducedIsMachineDependent) {
   EXPECT_EQ(across({V::reproduced, V::not_reproduced}), V::machine_dependent);
   EXPECT_EQ(across({V::not_reproduced, V::inconclusive, V::reproduced}), V::machine_dependent);
   EXPECT_EQ(to_string(V::machine_dependent), "machine-dependent");
   EXPECT_EQ(parse_verdict("machine-dependent"), V::machine_dependent);
 }
 
-TEST(AcrossRuns, UndecidedRunsBesideAgreeingOnesLeaveItInconclusive) {
+TEST(AcrossMachines, UndecidedMachinesBesideAgreeingOnesLeaveItInconclusive) {
   EXPECT_EQ(across({V::reproduced, V::inconclusive}), V::inconclusive);
   EXPECT_EQ(across({V::inconclusive, V::not_reproduced}), V::inconclusive);
   EXPECT_EQ(across({}), V::inconclusive);

@@ -42,8 +42,6 @@ Verdict across_machines(std::span<const Verdict> machines) {
   return Verdict::inconclusive;
 }
 
-Verdict across_runs(std::span<const Verdict> runs) { return across_machines(runs); }
-
 nlohmann::json ci95_json(const Measured& m) {
   return m.ci95 ? nlohmann::json{m.ci95->lo, m.ci95->hi} : nlohmann::json();
 }

@@ -47,15 +47,6 @@ inline constexpr std::string_view kAcrossMachinesRule =
     "machine-dependent iff one machine is reproduced and another not-reproduced, else inconclusive (some machines "
     "undecided, none contradicting another)";
 
-/// The engine's speed targets (engine_speed.hpp) still decide run by run: the verdict every run gives when they
-/// all agree, machine-dependent when one run meets a target and another misses it, else inconclusive.
-Verdict across_runs(std::span<const Verdict> runs);
-inline constexpr std::string_view kAcrossRunsRule =
-    "each recorded run (reports/bench/history/, one entry per run of the benchmarks, machine named) is decided "
-    "alone by the interval rule; the claim is reproduced (not-reproduced) iff every run is, machine-dependent iff "
-    "at least one run is reproduced and another not-reproduced, else inconclusive (some runs undecided, none "
-    "contradicting another)";
-
 /// The figure's 95% interval as [lo, hi], null without enough repetitions.
 nlohmann::json ci95_json(const Measured& m);
 

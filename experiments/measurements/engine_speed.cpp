@@ -1,8 +1,10 @@
 #include "experiments/measurements/engine_speed.hpp"
 
 #include "experiments/bench/machine_label.hpp"
+#include "experiments/bench/pooled.hpp"
 #include "experiments/claims/speed_verdict.hpp"
 
+#include <set>
 #include <string>
 #include <utility>
 
@@ -205,17 +207,57 @@ RunSpeed run_speed_from(const nlohmann::json& j) {
   return r;
 }
 
+/// The pooled row of frame/<energy>/<mesh> (`rest` is <energy>/<mesh>) on `machine`, when one of its runs
+/// measured it.
+std::optional<MachineSpeed> machine_speed(const bench::MachineRuns& machine, const std::string& rest) {
+  const std::optional<Measured> frames = bench::pooled_figure(machine, "frame/" + rest);
+  if (!frames) return std::nullopt;
+  MachineSpeed row{bench::machine_label(machine.runs.front()->machine),
+                   rest.substr(0, rest.find('/')),
+                   rest.substr(rest.find('/') + 1),
+                   machine.runs.size(),
+                   *frames,
+                   bench::pooled_figure(machine, bench::setup_key(rest))};
+  row.verdict = targets_verdict(row.setup_ms, row.frames_per_s, row.energy);
+  return row;
+}
+
+nlohmann::json to_json(const MachineSpeed& m) {
+  return {{"machine", m.machine},
+          {"energy", m.energy},
+          {"mesh", m.mesh},
+          {"runs", m.runs},
+          {"frames_per_s", m.frames_per_s.value},
+          {"frames_per_s_ci95", interval_json(m.frames_per_s.ci95)},
+          {"setup_ms", m.setup_ms ? nlohmann::json(m.setup_ms->value) : nlohmann::json()},
+          {"setup_ms_ci95", m.setup_ms ? interval_json(m.setup_ms->ci95) : nlohmann::json()},
+          {"verdict", claims::to_string(m.verdict)}};
+}
+
+MachineSpeed machine_speed_from(const nlohmann::json& j) {
+  MachineSpeed m{j.at("machine"), j.at("energy"), j.at("mesh"), j.at("runs"), {}, {}};
+  m.frames_per_s = {j.at("frames_per_s"), optional_interval(j.at("frames_per_s_ci95")), 0, 1};
+  if (j.at("setup_ms").is_number())
+    m.setup_ms = Measured{j["setup_ms"].get<double>(), optional_interval(j.at("setup_ms_ci95")), 0, 1};
+  m.verdict = verdict_from(j.at("verdict"));
+  return m;
+}
+
 nlohmann::json to_json(const SpeedHistory& h) {
-  nlohmann::json rows = nlohmann::json::array(), across = nlohmann::json::object();
+  nlohmann::json rows = nlohmann::json::array(), machines = nlohmann::json::array(), across = nlohmann::json::object();
   for (const RunSpeed& row : h.rows) rows.push_back(to_json(row));
-  for (const auto& [energy, verdict] : h.across_runs) across[energy] = claims::to_string(verdict);
-  return {{"rows", rows}, {"across_runs", across}, {"rule", h.rule}};
+  for (const MachineSpeed& row : h.machines) machines.push_back(to_json(row));
+  for (const auto& [energy, verdict] : h.across_machines) across[energy] = claims::to_string(verdict);
+  return {{"rows", rows}, {"machines", machines}, {"across_machines", across}, {"rule", h.rule}};
 }
 
 SpeedHistory history_from(const nlohmann::json& j) {
-  SpeedHistory h{{}, {}, j.value("rule", "")};
+  SpeedHistory h{{}, {}, {}, j.value("rule", "")};
   for (const auto& row : j.at("rows")) h.rows.push_back(run_speed_from(row));
-  for (const auto& [energy, verdict] : j.at("across_runs").items()) h.across_runs[energy] = verdict_from(verdict);
+  const nlohmann::json machines = j.value("machines", nlohmann::json::array()),
+                       across = j.value("across_machines", nlohmann::json::object());
+  for (const auto& row : machines) h.machines.push_back(machine_speed_from(row));
+  for (const auto& [energy, verdict] : across.items()) h.across_machines[energy] = verdict_from(verdict);
   return h;
 }
 
@@ -238,16 +280,23 @@ std::optional<EngineSpeed> engine_speed(const std::filesystem::path& bench_file)
   return speed;
 }
 
-SpeedHistory engine_speed_by_run(const std::vector<bench::RecordedRun>& runs) {
-  SpeedHistory history{{}, {}, std::string(claims::kAcrossRunsRule)};
-  std::map<std::string, std::vector<Verdict>> by_energy;
+SpeedHistory engine_speed_history(const std::vector<bench::RecordedRun>& runs) {
+  SpeedHistory history{{}, {}, {}, std::string(claims::kAcrossMachinesRule)};
+  std::set<std::string> rests;  // <energy>/<mesh> of every frame figure
   for (const bench::RecordedRun& run : runs)
     for (const auto& [key, figure] : run.figures) {
       if (!key.starts_with("frame/")) continue;  // frame/<energy>/<mesh>
-      const RunSpeed& row = history.rows.emplace_back(run_speed(run, key.substr(6), figure));
-      by_energy[row.energy].push_back(row.verdict);
+      history.rows.push_back(run_speed(run, key.substr(6), figure));
+      rests.insert(key.substr(6));
     }
-  for (const auto& [energy, verdicts] : by_energy) history.across_runs[energy] = claims::across_runs(verdicts);
+  std::map<std::string, std::vector<Verdict>> by_energy;
+  for (const bench::MachineRuns& machine : bench::by_machine(runs))
+    for (const std::string& rest : rests)
+      if (const std::optional<MachineSpeed> row = machine_speed(machine, rest)) {
+        history.machines.push_back(*row);
+        by_energy[row->energy].push_back(row->verdict);
+      }
+  for (const auto& [energy, verdicts] : by_energy) history.across_machines[energy] = claims::across_machines(verdicts);
   return history;
 }
 

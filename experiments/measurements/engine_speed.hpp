@@ -58,10 +58,21 @@ struct RunSpeed {
   Verdict verdict = Verdict::inconclusive;
 };
 
-/// Every recorded run, and each energy across them (speed_verdict.hpp's across_runs, under `rule`).
+/// One energy on one machine: its runs pooled (bench/pooled.hpp) and decided on the pooled intervals.
+struct MachineSpeed {
+  std::string machine, energy, mesh;
+  std::size_t runs = 0;
+  bench::Measured frames_per_s;
+  std::optional<bench::Measured> setup_ms;
+  Verdict verdict = Verdict::inconclusive;
+};
+
+/// Every recorded run decided alone, every machine's runs pooled, and each energy across machines
+/// (speed_verdict.hpp's across_machines, the rule the speed claims follow, quoted in `rule`).
 struct SpeedHistory {
   std::vector<RunSpeed> rows;
-  std::map<std::string, Verdict> across_runs;
+  std::vector<MachineSpeed> machines;
+  std::map<std::string, Verdict> across_machines;
   std::string rule;
 };
 
@@ -76,8 +87,8 @@ struct EngineSpeed {
 /// The record of `bench_file` (without history); nullopt when it does not exist.
 std::optional<EngineSpeed> engine_speed(const std::filesystem::path& bench_file);
 
-/// The same targets on every recorded run, each run decided alone and the runs together.
-SpeedHistory engine_speed_by_run(const std::vector<bench::RecordedRun>& runs);
+/// The same targets on every recorded run decided alone, on each machine's runs pooled, and across machines.
+SpeedHistory engine_speed_history(const std::vector<bench::RecordedRun>& runs);
 
 /// claims.json's "engine_speed": {"file", "date", "machine", "compiler", "flags", "mesh", "triangles", "rows":
 /// [{"energy", "setup_ms", "setup_ms_ci95", "setup_target_ms", "frame_ms", "frames_per_s", "frames_per_s_ci95",
@@ -86,7 +97,9 @@ SpeedHistory engine_speed_by_run(const std::vector<bench::RecordedRun>& runs);
 /// "raised_verdict_batched", "frame_parts": {"right_hand_side_ms", "assembly_ms", "factor_ms", "solve_ms",
 /// "threads", "rest_ms"}}], "history": {"rows": [{"run", "recorded", "date", "cpu", "cores", "energy", "mesh",
 /// "frames_per_s", "frames_per_s_ci95", "target_frames_per_s", "setup_ms", "setup_ms_ci95", "processes",
-/// "verdict"}], "across_runs": {energy: verdict}, "rule"}}; null for what was not measured.
+/// "verdict"}], "machines": [{"machine", "energy", "mesh", "runs", "frames_per_s", "frames_per_s_ci95",
+/// "setup_ms", "setup_ms_ci95", "verdict"}], "across_machines": {energy: verdict}, "rule"}}; null for what was not
+/// measured.
 void to_json(nlohmann::json& json, const EngineSpeed& speed);
 void from_json(const nlohmann::json& json, EngineSpeed& speed);
 

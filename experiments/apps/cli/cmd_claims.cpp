@@ -65,7 +65,7 @@ EngineTables engine_tables(const RunContext& context) {
   using namespace affinterp::measurements;
   try {
     std::optional<EngineSpeed> speed = engine_speed(context.bench_dir / "bench_interp.json");
-    if (speed) speed->history = engine_speed_by_run(bench::runs_of(context.bench_dir));
+    if (speed) speed->history = engine_speed_history(bench::runs_of(context.bench_dir));
     return {record_json(speed), record_json(engine_scale(context.bench_dir / "bench_scale.json", context)),
             record_json(engine_cli(context.bench_dir / "bench_cli_scale.json"))};
   } catch (const std::runtime_error& e) {
