@@ -63,8 +63,6 @@ void check_compatible(const Mesh3& reference, const Mesh3& pose) {
   for (Index i = 0; i < reference.element_count(); ++i)
     if (pose.elements.col(i) != reference.elements.col(i))
       throw InvalidMesh("the poses differ in connectivity at " + element_name(reference, i));
-  for (Index k = 0; k < pose.vertex_count(); ++k)
-    if (!pose.vertices.col(k).allFinite()) throw InvalidMesh("vertex " + std::to_string(k) + " is not finite");
 }
 
 void check_connected(const Mesh3& mesh) {
@@ -109,6 +107,8 @@ void check_reference(const Mesh3& reference, const char* which) {
 
 void check_pose(const Mesh3& reference, const Mesh3& pose, const std::string& which) {
   check_compatible(reference, pose);
+  for (Index k = 0; k < pose.vertex_count(); ++k)
+    if (!pose.vertices.col(k).allFinite()) throw InvalidMesh(which + " vertex " + std::to_string(k) + " is not finite");
   check_elements(pose, which);
 }
 

@@ -29,7 +29,8 @@ void check_elements(const Mesh3& mesh, const std::string& which);
 
 /// check_well_formed, check_connected and check_elements: the rules for the source or rest mesh, named `which`.
 void check_reference(const Mesh3& reference, const char* which);
-/// check_compatible with the reference and check_elements: the rules for a target or pose named `which`.
+/// check_compatible with the reference, finite coordinates and check_elements: the rules for a target or pose named
+/// `which`.
 void check_pose(const Mesh3& reference, const Mesh3& pose, const std::string& which);
 
 }  // namespace affinterp::global3
