@@ -1,7 +1,7 @@
 (* Claims whose statements follow from the lemmas in a few lines, stated about Def 2.2.1 / Def 2.2.2 (Defs.v). *)
-Require Import Reals Lra Psatz.
+Require Import Reals Lra Psatz FunctionalExtensionality.
 From Coquelicot Require Import Coquelicot.
-Require Import Affinterp.Defs Affinterp.L9 Affinterp.L10 Affinterp.L12.
+Require Import Affinterp.Defs Affinterp.L2 Affinterp.L5 Affinterp.L9 Affinterp.L10 Affinterp.L12 Affinterp.Thm225.
 Open Scope R_scope.
 
 (* atlas.svd.norm: R_{t alpha}((1 - t) I + t D) R_{t beta}, D = diag(x, y), x, y > 0, is good for norm iff
@@ -60,4 +60,43 @@ Proof.
     + intros E t. destruct (Rlt_or_le 1 (l1 * l2)).
       * pose proof (proj1 (proj2 (L10a_derivative_sign (l1 * l2) t Hc)) ltac:(lra)). lra.
       * pose proof (proj2 (proj2 (L10a_derivative_sign (l1 * l2) t Hc)) ltac:(lra)). lra.
+Qed.
+
+(* The area cells: det B > 0 and tr B - 2, 2 det B - tr B both <= 0 or both >= 0 (the corrected condition of
+   thesis Thm 2.2.1, 2.2.2, 2.2.4 and the atlas's, as their sentences state it). *)
+Definition area_condition (B : mat) : Prop :=
+  0 < det B /\ ((2 * det B - tr B <= 0 /\ tr B - 2 <= 0) \/ (0 <= tr B - 2 /\ 0 <= 2 * det B - tr B)).
+
+(* atlas.linear.area, thesis Thm 2.2.1 corrected: (1 - t) I + t A is good for area iff the condition holds for A. *)
+Theorem atlas_linear_area (A : mat) : good_for_area (blend A) <-> area_condition A.
+Proof.
+  rewrite L2_level_E. unfold area_condition, not_opposite.
+  split; intros [Hd H]; split; try exact Hd.
+  - destruct H as [Hn1 Hn2].
+    destruct (Rle_or_lt (2 * det A - tr A) 0), (Rle_or_lt (tr A - 2) 0); [left; split; lra | right | right | right].
+    + split; [lra | apply Rnot_lt_le; intros Hn; apply Hn2; lra].
+    + split; [apply Rnot_lt_le; intros Hn; apply Hn1; lra | lra].
+    + split; lra.
+  - destruct H as [[H1 H2] | [H1 H2]]; split; intros [H3 H4]; lra.
+Qed.
+
+Lemma good_for_area_det (A B : R -> mat) :
+  (forall t, det (A t) = det (B t)) -> (good_for_area A <-> good_for_area B).
+Proof.
+  intros E. unfold good_for_area.
+  replace (fun t => det (A t)) with (fun t => det (B t)) by (apply functional_extensionality; intros; symmetry; apply E).
+  split; intros [Hm Hp]; split; try exact Hm; intros t Ht; [rewrite <- E | rewrite E]; apply Hp, Ht.
+Qed.
+
+(* atlas.svd.area, thesis Thm 2.2.2 corrected: with tr D and det D in place of tr A and det A (L5). *)
+Theorem atlas_svd_area (x y alpha beta : R) : good_for_area (A_s x y alpha beta) <-> area_condition (Mat x 0 0 y).
+Proof.
+  rewrite <- atlas_linear_area. apply good_for_area_det. intros t. unfold A_s. apply L5_det_homotopy.
+Qed.
+
+(* atlas.polar.area, thesis Thm 2.2.4 corrected: with tr S and det S (L5). *)
+Theorem atlas_polar_area (theta : R) (S : mat) : good_for_area (A_p theta S) <-> area_condition S.
+Proof.
+  rewrite <- atlas_linear_area. apply good_for_area_det. intros t. unfold A_p.
+  rewrite L5_det_product, L5_det_rotation. ring.
 Qed.
