@@ -63,13 +63,14 @@ if sentences:
         "Affinterp.%s.%s" % (s["file"][:-2], s["theorem"]) for s in sentences))
     print('Goal True. idtac "== the %d sentences with a certificate". Abort.' % len(sentences))
     print("Print Assumptions sentences.")
-claims = json.load(open(sys.argv[1])).get("claims", [])
+manifest = json.load(open(sys.argv[1]))
+claims = manifest.get("claims", []) + manifest.get("encodings", [])
 if claims:
     for f in sorted({c["file"][:-2] for c in claims}):
         print("Require Affinterp.%s." % f)
     print("Definition claims := (%s)." % ", ".join(
         "Affinterp.%s.%s" % (c["file"][:-2], c["theorem"]) for c in claims))
-    print('Goal True. idtac "== the claims %s". Abort.' % " ".join(c["claim"] for c in claims))
+    print('Goal True. idtac "== the claims and encodings %s". Abort.' % ", ".join(c.get("claim", c.get("encoding")) for c in claims))
     print("Print Assumptions claims.")
 PY
 grep -q '^Print Assumptions' Assumptions.v || { echo "MANIFEST.json lists no theorem"; exit 1; }

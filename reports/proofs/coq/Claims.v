@@ -1,7 +1,8 @@
 (* Claims whose statements follow from the lemmas in a few lines, stated about Def 2.2.1 / Def 2.2.2 (Defs.v). *)
 Require Import Reals Lra Psatz FunctionalExtensionality.
 From Coquelicot Require Import Coquelicot.
-Require Import Affinterp.Defs Affinterp.L2 Affinterp.L5 Affinterp.L9 Affinterp.L10 Affinterp.L12 Affinterp.Thm225.
+Require Import Affinterp.Defs Affinterp.L2 Affinterp.L3 Affinterp.L4 Affinterp.L5 Affinterp.L6 Affinterp.L8 Affinterp.L9
+  Affinterp.L10 Affinterp.L12 Affinterp.Thm225.
 Open Scope R_scope.
 
 (* atlas.svd.norm: R_{t alpha}((1 - t) I + t D) R_{t beta}, D = diag(x, y), x, y > 0, is good for norm iff
@@ -99,4 +100,19 @@ Theorem atlas_polar_area (theta : R) (S : mat) : good_for_area (A_p theta S) <->
 Proof.
   rewrite <- atlas_linear_area. apply good_for_area_det. intros t. unfold A_p.
   rewrite L5_det_product, L5_det_rotation. ring.
+Qed.
+
+(* Level N (LEMMAS.md, "Level N" under L8): the linear blend is good for norm iff Q <= 0 or P - nu Q >= 0 for
+   some nu >= 0, with P = sym(B - I), Q = P + (B - I)^T (B - I) (L6, L4, L3, L8). *)
+Theorem level_N (B : mat) :
+  good_for_norm (blend B) <->
+  nsd (Q_of B) \/ exists nu, 0 <= nu /\ psd (madd (P_of B) (mscale (- nu) (Q_of B))).
+Proof.
+  assert (HP : symmetric (P_of B)) by (destruct B; unfold symmetric, P_of, M_of, sym, madd, mscale, transpose, Id2; simpl; ring).
+  assert (HQ : symmetric (Q_of B)).
+  { destruct B; unfold symmetric, Q_of, P_of, M_of, sym, madd, mscale, mmul, transpose, Id2; simpl; ring. }
+  rewrite <- (L8 _ _ HP HQ). unfold good_for_norm. rewrite L6_unit_vs_all.
+  setoid_rewrite L4. setoid_rewrite L3. split.
+  - intros H [v Hv]. exact (H v Hv).
+  - intros H v Hv. apply H. exists v. exact Hv.
 Qed.
