@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <queue>
+#include <tuple>
 #include <utility>
 
 namespace affinterp::global3 {
@@ -44,33 +46,59 @@ DualGraph3 dual_graph3(const Eigen::MatrixXi& elements) {
   return graph;
 }
 
-Eigen::Matrix3Xd consistent_logs(const DualGraph3& graph, const Eigen::Matrix3Xd& principal,
-                                 const Eigen::Matrix3Xd* root_reference) {
-  Eigen::Matrix3Xd omega = principal, reference(3, principal.cols());
-  std::vector<bool> visited(static_cast<std::size_t>(principal.cols()), false);
-  for (Eigen::Index root = 0; root < principal.cols(); ++root) {
-    if (visited[static_cast<std::size_t>(root)]) continue;
-    visited[static_cast<std::size_t>(root)] = true;
-    if (root_reference) omega.col(root) = local3::nearest_log<double>(omega.col(root), root_reference->col(root));
-    reference.col(root) = omega.col(root);
-    std::queue<int> queue;
-    queue.push(static_cast<int>(root));
-    while (!queue.empty()) {
-      const int parent = queue.front();
-      queue.pop();
-      for (int s = graph.start[static_cast<std::size_t>(parent)]; s < graph.start[static_cast<std::size_t>(parent) + 1];
-           ++s) {
-        const int child = graph.neighbour[static_cast<std::size_t>(s)];
-        if (visited[static_cast<std::size_t>(child)]) continue;
-        visited[static_cast<std::size_t>(child)] = true;
-        omega.col(child) = local3::nearest_log<double>(omega.col(child), reference.col(parent));
-        const bool reliable = (omega.col(child) - reference.col(parent)).norm() <= reliable_step;
-        reference.col(child) = reliable ? omega.col(child) : reference.col(parent);
-        queue.push(child);
-      }
+namespace {
+
+/// The walk's state: each element's logarithm, its reference for its children, and the frontier, the unvisited
+/// neighbours of visited elements keyed by how far their nearest representative lies from that reference.
+struct Walk {
+  const DualGraph3& graph;
+  const Eigen::Matrix3Xd& principal;
+  Eigen::Matrix3Xd omega, reference;
+  std::vector<bool> visited;
+  using Step = std::tuple<double, int, int>;  ///< (distance, child, parent): smallest first, ties by index
+  std::priority_queue<Step, std::vector<Step>, std::greater<Step>> frontier;
+
+  Walk(const DualGraph3& g, const Eigen::Matrix3Xd& p)
+      : graph(g), principal(p), omega(p), reference(3, p.cols()), visited(static_cast<std::size_t>(p.cols()), false) {}
+
+  void push_neighbours(int parent) {
+    const Eigen::Vector3d r = reference.col(parent);
+    for (int s = graph.start[static_cast<std::size_t>(parent)]; s < graph.start[static_cast<std::size_t>(parent) + 1];
+         ++s) {
+      const int child = graph.neighbour[static_cast<std::size_t>(s)];
+      if (!visited[static_cast<std::size_t>(child)])
+        frontier.push({(local3::nearest_log<double>(principal.col(child), r) - r).norm(), child, parent});
     }
   }
-  return omega;
+  /// Visits the element `child` from `parent`: its representative nearest the parent's reference.
+  void visit(int child, int parent) {
+    visited[static_cast<std::size_t>(child)] = true;
+    omega.col(child) = local3::nearest_log<double>(principal.col(child), reference.col(parent));
+    const bool reliable = (omega.col(child) - reference.col(parent)).norm() <= reliable_step;
+    reference.col(child) = reliable ? omega.col(child) : reference.col(parent);
+    push_neighbours(child);
+  }
+};
+
+}  // namespace
+
+Eigen::Matrix3Xd consistent_logs(const DualGraph3& graph, const Eigen::Matrix3Xd& principal,
+                                 const Eigen::Matrix3Xd* root_reference) {
+  Walk walk(graph, principal);
+  for (Eigen::Index root = 0; root < principal.cols(); ++root) {
+    if (walk.visited[static_cast<std::size_t>(root)]) continue;
+    walk.visited[static_cast<std::size_t>(root)] = true;
+    if (root_reference)
+      walk.omega.col(root) = local3::nearest_log<double>(principal.col(root), root_reference->col(root));
+    walk.reference.col(root) = walk.omega.col(root);
+    walk.push_neighbours(static_cast<int>(root));
+    while (!walk.frontier.empty()) {
+      const auto [distance, child, parent] = walk.frontier.top();
+      walk.frontier.pop();
+      if (!walk.visited[static_cast<std::size_t>(child)]) walk.visit(child, parent);
+    }
+  }
+  return walk.omega;
 }
 
 }  // namespace affinterp::global3

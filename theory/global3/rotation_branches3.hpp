@@ -3,18 +3,25 @@
 // logarithm ω_i (local3/rotation_branch3.hpp) is defined only up to the branches (θ + 2πk) a, and a local
 // homotopy R^t = exp(t[ω_i]×) depends on the branch for every t ∉ ℤ. A mesh that turns by more than π from one end
 // to the other (a bar twisted by 3π, a tail turned by 180° against a body turned the other way) needs logarithms
-// beyond the principal ones. The consistent choice walks the dual graph breadth-first from element 0 (from the
-// first unvisited element of each further piece) and replaces each ω_j by its representative nearest its parent's
-// reference: the parent's own logarithm when that was reliable, else the parent's reference.
+// beyond the principal ones. The consistent choice walks the dual graph from element 0 (from the first unvisited
+// element of each further piece) and gives each element its representative nearest its parent's reference.
 //
-// Why a reference. Unlike the plane's, the 3D exponential is singular on the spheres |ω| = 2πk: near them a small
-// tilt of the rotation needs a large change of ω, and an element turned by a full turn about a slightly tilted
-// axis (R ≈ I, as in a twisted bar's elements at twist 2π, sheared by the twist) has all its representatives on
-// the line of its tilt axis, none near its neighbours' ≈ 2π along the bar. Such an element is given its nearest
+// Order: the walk is quality-guided, as in phase unwrapping (Ghiglia and Pritt, "Two-Dimensional Phase
+// Unwrapping", Wiley 1998, §4.3): of all unvisited neighbours of visited elements, the next one visited is the one
+// whose nearest representative lies nearest its parent's reference (Prim's order on those distances). Smooth regions
+// are unwrapped first and the walk crosses creases and badly determined elements last, so that their choices are
+// passed on to as few elements as possible. (The 2D engine's breadth-first order is enough in the plane, where
+// angles are scalars and a choice is never ambiguous; on the cat poses the breadth-first walk gave up to 474
+// triangles folded against their local maps in mid-frames, this order 18.)
+//
+// Reference: the element's own logarithm when it lies within `reliable_step` (1 rad) of its parent's reference,
+// else the parent's reference. Unlike the plane's, the 3D exponential is singular on the spheres |ω| = 2πk: near
+// them a small tilt of the rotation needs a large change of ω, and an element turned by a full turn about a slightly
+// tilted axis (R ≈ I, as in a twisted bar's elements at twist 2π, sheared by the twist) has all its representatives
+// on the line of its tilt axis, none near its neighbours' ≈ 2π along the bar. Such an element gets its nearest
 // representative (no choice makes its own path right), but its children are compared with its parent's reference,
-// so that the walk carries the turn count past it. An element is reliable when its logarithm lies within
-// `reliable_step` (1 rad) of its parent's reference: neighbours on a mesh fine enough for its motion differ by far
-// less, an element on the singular sphere by about its distance 2π·sin(angle between the axes) from it.
+// so that the walk carries the turn count past it. Neighbours on a mesh fine enough for its motion differ by far
+// less than 1 rad; an element on the singular sphere by about 2π·sin(the angle between the axes).
 #include <Eigen/Core>
 
 #include <vector>
