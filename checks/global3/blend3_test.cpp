@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <numbers>
 
 namespace blend3_test {
@@ -67,6 +69,31 @@ TEST(Blend3, ConsistentBranchesSurviveTheRestPose) {
   const Eigen::Matrix3Xd v = blend.vertices_at(Eigen::Vector4d(0.5, 0.5, 0, 0));
   EXPECT_LT((v - halfway.vertices).colwise().norm().maxCoeff(), 0.1 * 0.1);
   EXPECT_GT(blend.rotation_logs(1).colwise().norm().maxCoeff(), 1.7 * pi);
+}
+
+/// `mesh` turned rigidly by `angle` about the z axis through its barycentre.
+Mesh3 turned(Mesh3 mesh, double angle) {
+  const Eigen::Vector3d centre = mesh.vertices.rowwise().mean();
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  mesh.vertices = (R * (mesh.vertices.colwise() - centre)).colwise() + centre;
+  return mesh;
+}
+
+// Across poses: pose 1 turned by 0.9π, pose 2 by 1.1π (principal logarithm −0.9π). Pose 2's walk starts from the
+// representative nearest pose 1's, 1.1π, so the even blend of the two is the half turn; with independent
+// principal logarithms it would be the rest pose (0.9π − 0.9π = 0).
+TEST(Blend3, PosesAreAlignedAcrossPoses) {
+  const Mesh3 tube = meshes3::triangle_tube(4, 6, 3);
+  const Blend3 blend({tube, turned(tube, 0.9 * pi), turned(tube, 1.1 * pi)});
+  const Eigen::Matrix3Xd half_turn = turned(tube, pi).vertices;
+  EXPECT_LT((blend.vertices_at(Eigen::Vector3d(0, 0.5, 0.5)) - half_turn).cwiseAbs().maxCoeff(),
+            1e-9 * box_diagonal(half_turn));
+  EXPECT_NEAR(blend.rotation_logs(2).col(0).norm(), 1.1 * pi, 1e-9);
+  Blend3Options principal;
+  principal.rotation_branch = affinterp::global::RotationBranch::principal;
+  const Blend3 unaligned({tube, turned(tube, 0.9 * pi), turned(tube, 1.1 * pi)}, principal);
+  EXPECT_LT((unaligned.vertices_at(Eigen::Vector3d(0, 0.5, 0.5)) - tube.vertices).cwiseAbs().maxCoeff(),
+            1e-9 * box_diagonal(half_turn));
 }
 
 TEST(Blend3, RefusesWeightsOfWrongCountNonFiniteOrOffTheSimplex) {
