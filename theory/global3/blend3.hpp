@@ -9,7 +9,7 @@
 // every weight vector. With w = e_k the maps are A_{k,i} and the frame is pose k (E^F is zero there).
 //
 // Rotation branches, in this order: each pose's principal logarithms are made consistent over the dual graph
-// (rotation_branches3.hpp); the breadth-first walk's root (element 0) first takes the representative nearest the
+// (rotation_branches3.hpp); the walk's root (element 0) first takes the representative nearest the
 // previous pose's logarithm there (pose 0's: nearest 0, the principal one), and the walk carries that choice to
 // every element. So each pose's field is smooth across neighbours, and consecutive poses agree at the root.
 // (Aligning every element with the previous pose's after the walk would undo the walk wherever the previous field
