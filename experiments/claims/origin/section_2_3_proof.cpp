@@ -28,14 +28,26 @@ std::vector<GiNaC::symbol> unknowns_by_coordinate() {
 
 }  // namespace
 
+GiNaC::exmap printed_minimiser() {
+  GiNaC::exmap values;
+  for (const GiNaC::ex& relation : origin::printed::minimiser()) values[relation.lhs()] = relation.rhs();
+  return values;
+}
+
 std::vector<proofs::Identity> stationarity_identities() {
   const GiNaC::ex& E2 = origin::thesis_study().E2_common;
-  const GiNaC::lst printed = origin::printed::minimiser();
+  const GiNaC::exmap at_printed = printed_minimiser();
   std::vector<proofs::Identity> identities;
   for (const GiNaC::ex& u : origin::symbols().unknowns) {
     const std::string name = name_of(u);
+    // Two steps the checkers perform, one identity each: the derivative, stated equal to its expanded form (affine
+    // in v), then the substitution into that form; substituting into the derivative of E2 as built multiplies the
+    // printed denominator once per term and made the grid's degree bound near 160 in x and y.
+    const GiNaC::ex gradient = GiNaC::diff(E2, GiNaC::ex_to<GiNaC::symbol>(u)).expand();
+    identities.push_back({"gradient-" + name, "∂E2(o, o)/∂" + name + " expanded (affine in v)",
+                          proofs::derivative(E2, GiNaC::ex_to<GiNaC::symbol>(u)), gradient});
     identities.push_back({"stationary-" + name, "∂E2(o, o)/∂" + name + " = 0 at the printed minimiser",
-                          GiNaC::diff(E2, GiNaC::ex_to<GiNaC::symbol>(u)).subs(printed), GiNaC::ex(0)});
+                          proofs::substitution(gradient, at_printed), GiNaC::ex(0)});
   }
   return identities;
 }

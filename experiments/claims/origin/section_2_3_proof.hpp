@@ -10,7 +10,11 @@
 
 namespace affinterp::claims::section_2_3 {
 
-/// For each unknown u = v1x, …, v4y: ∂E2(o, o)/∂u at the printed minimiser is 0, a rational identity in x, y
+/// The printed minimiser v1x = …, …, v4y = … (rational functions of x, y), for a substitution step.
+GiNaC::exmap printed_minimiser();
+
+/// For each unknown u = v1x, …, v4y: ∂E2(o, o)/∂u equals its expanded form, and that form at the printed minimiser is
+/// 0, a rational identity in x, y
 /// (E2 from theory/origin's definitions, Def. 2.3.2).
 std::vector<proofs::Identity> stationarity_identities();
 

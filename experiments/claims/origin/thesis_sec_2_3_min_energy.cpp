@@ -3,6 +3,7 @@
 #include "experiments/claims/origin/ginac_values.hpp"
 #include "experiments/claims/origin/rational_origins.hpp"
 #include "experiments/claims/origin/section_2_3_proof.hpp"
+#include "experiments/proofs/step_nodes.hpp"
 #include "theory/origin/energy.hpp"
 #include "theory/origin/equal_energy_locus.hpp"
 #include "theory/origin/printed_section_2_3.hpp"
@@ -42,7 +43,7 @@ Proof proof(const ClaimContext& ctx) {
                         GiNaC::denom(origin::printed::min_E2()), GiNaC::pow(s.x + s.y - 1, 2) + 2});
   identities.push_back(
       {"value", "E2(o, o) at the printed minimiser = (2 + (x−1)x + (y−1)y)/(x² + 2xy + y² − 2x − 2y + 3)",
-       origin::thesis_study().E2_common.subs(origin::printed::minimiser()), origin::printed::min_E2()});
+       proofs::substitution(origin::thesis_study().E2_common, section_2_3::printed_minimiser()), origin::printed::min_E2()});
   return proofs::combined_proof(
       "every origin o = (x, y) in the real plane",
       "identities in x, y from theory/origin's E2(o, o) (Def. 2.3.2): the printed minimiser is stationary, the "
