@@ -62,7 +62,7 @@ Proof proof(const ClaimContext& ctx) {
   const symbolic_er::Pair p;
   const GiNaC::symbol x("x"), y("y"), s("s"), delta("delta");
   const GiNaC::ex nA = symbolic_er::norm2(p.A), a = symbolic_er::inner(p.A, p.B), j = symbolic_er::inner_J(p.A, p.B);
-  const Mat2X residual = symbolic_er::similarity(x, y).lazyProduct(p.A) - p.B;
+  const Mat2X residual = symbolic_er::times(symbolic_er::similarity(x, y), p.A) - p.B;  // the product a step
   const Mat2X sR = local::scaled(GiNaC::ex(s), local::rotation<GiNaC::ex>(delta));
   // xI + yJ at (x, y) = (s cos δ, s sin δ): the substitution left to the checkers.
   const GiNaC::matrix xI_yJ = proofs::to_ginac(symbolic_er::similarity(x, y));

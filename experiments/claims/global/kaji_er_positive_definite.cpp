@@ -58,7 +58,7 @@ Proof proof(const ClaimContext& ctx) {
       {"semidefinite", "‖A‖⁴ E^R(A, B) = ‖ ‖A‖²B − ⟨A,B⟩A − ⟨JA,B⟩JA ‖²", nA * nA * symbolic_er::E_R(p.A, p.B),
        projection_residual.squaredNorm()},
       {"invariant", "E^R((xI + yJ)A, B) = E^R(A, B) wherever both are defined (the normal form's lemma)",
-       symbolic_er::E_R(symbolic_er::similarity(x, y).lazyProduct(p.A), p.B), symbolic_er::E_R(p.A, p.B)},
+       symbolic_er::E_R(symbolic_er::times(symbolic_er::similarity(x, y), p.A), p.B), symbolic_er::E_R(p.A, p.B)},
   };
 
   using logic::Polynomial;

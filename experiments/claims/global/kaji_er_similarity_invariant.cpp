@@ -34,7 +34,7 @@ using global_exact::Rational;
 Proof proof(const ClaimContext& ctx) {
   const symbolic_er::Pair p;
   const GiNaC::symbol x("x"), y("y");
-  const symbolic_er::Mat2X CA = symbolic_er::similarity(x, y).lazyProduct(p.A);
+  const symbolic_er::Mat2X CA = symbolic_er::times(symbolic_er::similarity(x, y), p.A);  // the product a step
   const std::vector<proofs::Identity> identities = {
       {"norm-scales", "‖(xI + yJ)A‖² = (x² + y²)‖A‖²", symbolic_er::norm2(CA),
        (x * x + y * y) * symbolic_er::norm2(p.A)},

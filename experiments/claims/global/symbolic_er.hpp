@@ -2,6 +2,7 @@
 // Kaji's E^R (Appendix) over symbols: the suite's own templates of theory/global/local_error.hpp instantiated
 // with GiNaC expressions, for the identities that prove the kaji.er.* claims for all reals.
 #include "experiments/proofs/ginac_scalar.hpp"
+#include "experiments/proofs/step_nodes.hpp"
 #include "theory/global/local_error.hpp"
 
 #include <ginac/ginac.h>
@@ -19,6 +20,14 @@ struct Pair {
 /// xI + yJ (J = R_{π/2}): every s R_δ is one (Kaji Appendix).
 inline Mat2X similarity(const GiNaC::ex& x, const GiNaC::ex& y) {
   return local::scaled(x, local::identity2<GiNaC::ex>()) + local::scaled(y, global::rotation_J<GiNaC::ex>());
+}
+
+/// A B as a product the identity checkers perform: each entry an entry node of the product of A and B.
+inline Mat2X times(const Mat2X& A, const Mat2X& B) {
+  const GiNaC::ex AB = proofs::product(proofs::to_ginac(A), proofs::to_ginac(B));
+  Mat2X entries;
+  for (unsigned k = 0; k < 4; ++k) entries(k / 2, k % 2) = proofs::entry(AB, k);
+  return entries;
 }
 
 /// ‖A‖², ⟨A, B⟩ and ⟨JA, B⟩ (Kaji Appendix).
