@@ -2,6 +2,7 @@
 #include "experiments/claims/confirmed_by_proof.hpp"
 #include "experiments/proofs/ginac_scalar.hpp"
 #include "experiments/proofs/identity.hpp"
+#include "experiments/proofs/step_nodes.hpp"
 #include "experiments/support/random.hpp"
 #include "theory/exact/rational.hpp"
 #include "theory/local/local.hpp"
@@ -46,7 +47,7 @@ Proof proof(const ClaimContext& ctx) {
   last_row << X(0), X(0), X(1);
   const std::vector<proofs::Identity> identities = {
       {"inverse", "P̂⁻¹ P̂ = I (inverse3 by the adjugate), so Â P̂ = Q̂ P̂⁻¹ P̂ = Q̂: Â p_k = q_k",
-       proofs::to_ginac<3, 3>(affinterp::local::inverse3(P_hat).lazyProduct(P_hat)),
+       proofs::product(proofs::to_ginac<3, 3>(affinterp::local::inverse3(P_hat)), proofs::to_ginac<3, 3>(P_hat)),
        proofs::to_ginac<3, 3>(affinterp::local::Mat3<X>::Identity())},
       {"last-row", "Â's last row is (0, 0, 1)", proofs::to_ginac<1, 3>(map.A_hat.row(2)), proofs::to_ginac(last_row)},
   };
