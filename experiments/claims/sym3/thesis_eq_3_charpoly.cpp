@@ -3,6 +3,7 @@
 #include "experiments/claims/values.hpp"
 #include "experiments/proofs/ginac_scalar.hpp"
 #include "experiments/proofs/identity.hpp"
+#include "experiments/proofs/step_nodes.hpp"
 #include "theory/exact/rational.hpp"
 
 #include <stdexcept>
@@ -62,7 +63,7 @@ Proof proof(const ClaimContext& ctx) {
   return proofs::identity_proof(
       "every real symmetric 3×3 S and every real x", "one polynomial identity in x, a, …, f",
       {proofs::prove_identity({"charpoly", "det(xE − S) = x³ − (tr S)x² + ((tr S)² − ‖S‖²_F)/2·x − det S",
-                               det3<GiNaC::ex>(xE_minus_S), printed<GiNaC::ex>(x, S)},
+                               proofs::determinant_of(proofs::to_ginac<3, 3>(xE_minus_S)), printed<GiNaC::ex>(x, S)},
                               ctx.proof_files())});
 }
 

@@ -3,6 +3,7 @@
 #include "experiments/claims/sym3/exact_spectrum.hpp"
 #include "experiments/claims/sym3/sd_sweep.hpp"
 #include "experiments/proofs/identity.hpp"
+#include "experiments/proofs/step_nodes.hpp"
 #include "theory/sym3/spectral_decomposition.hpp"
 
 namespace affinterp::claims::sym3::thesis_sd_case2 {
@@ -32,13 +33,14 @@ using exact::Real100;
 
 /// xλ² + yλ + z = e^λ at λ2 and λ3 with theory/sym3's case-2 x, y, z over symbols λ2, λ3.
 Proof proof(const ClaimContext& ctx) {
-  const GiNaC::symbol l2("l2"), l3("l3");
+  const GiNaC::symbol l2("l2"), l3("l3"), lambda("lambda");
   const auto c = affinterp::sym3::sd_case2<GiNaC::ex>(l2, l3);
+  const GiNaC::ex p = c.x * lambda * lambda + c.y * lambda + c.z;  // p(λ), substituted by the checkers
   std::vector<proofs::Identity> identities;
   for (const GiNaC::symbol& l : {l2, l3})
     identities.push_back({"interpolates-at-" + l.get_name(),
                           "x " + l.get_name() + "² + y " + l.get_name() + " + z = exp(" + l.get_name() + ")",
-                          c.x * l * l + c.y * l + c.z, GiNaC::exp(l)});
+                          proofs::substitution(p, lambda, l), GiNaC::exp(l)});
   return proofs::identity_proof(
       "all real λ1 = λ2 ≠ λ3 (symmetric S with exactly two equal eigenvalues)",
       "rational identities in λ2, λ3 and e^λ2, e^λ3 (independent variables on the grid) from theory/sym3's case 2 "

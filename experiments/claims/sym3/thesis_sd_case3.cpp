@@ -3,6 +3,7 @@
 #include "experiments/claims/sym3/sd_sweep.hpp"
 #include "experiments/claims/values.hpp"
 #include "experiments/proofs/identity.hpp"
+#include "experiments/proofs/step_nodes.hpp"
 #include "theory/sym3/spectral_decomposition.hpp"
 
 #include <algorithm>
@@ -44,16 +45,18 @@ using exact::Real100;
 /// interpolation gives xS² + yS + zE = Q diag(e^λ) Qᵀ = exp S.
 Proof proof(const ClaimContext& ctx) {
   const std::array<GiNaC::symbol, 3> l{GiNaC::symbol("l1"), GiNaC::symbol("l2"), GiNaC::symbol("l3")};
+  const GiNaC::symbol lambda("lambda");
   std::vector<proofs::Identity> identities;
   for (const SdReading reading : {SdReading::corrected, SdReading::printed}) {
     const std::string name = reading == SdReading::corrected ? "corrected" : "printed";
     const auto c = affinterp::sym3::sd_case3<GiNaC::ex>(l[0], l[1], l[2], reading);
+    const GiNaC::ex p = c.x * lambda * lambda + c.y * lambda + c.z;  // p(λ), substituted by the checkers
     for (int i = 0; i < 3; ++i) {
       const std::string at = "l" + std::to_string(i + 1);
       identities.push_back({name + ".interpolates-at-" + at,
                             "x " + at + "² + y " + at + " + z = exp(" + at +
                                 ") with x = " + (reading == SdReading::corrected ? "s − t − u" : "s + t + u (printed)"),
-                            c.x * l[i] * l[i] + c.y * l[i] + c.z, GiNaC::exp(l[i])});
+                            proofs::substitution(p, lambda, l[i]), GiNaC::exp(l[i])});
     }
   }
   return proofs::identity_proof(

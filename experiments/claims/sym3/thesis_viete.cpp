@@ -6,6 +6,7 @@
 #include "experiments/proofs/ginac_polynomial.hpp"
 #include "experiments/proofs/ginac_scalar.hpp"
 #include "experiments/proofs/identity.hpp"
+#include "experiments/proofs/step_nodes.hpp"
 #include "theory/local/rotation.hpp"
 #include "theory/sym3/viete.hpp"
 
@@ -110,17 +111,20 @@ std::vector<proofs::Identity> viete_identities() {
   proofs::SymbolicMatrix<3, 3> S, zE_minus_S;
   S << a, d, e, d, b, f, e, f, c;
   const SymbolicInvariants v = invariants(S);
+  // χ(at) = det(zE − S) at z = at: the determinant and the substitution left to the checkers.
+  const GiNaC::symbol z("z");
+  zE_minus_S = -S;
+  for (int i = 0; i < 3; ++i) zE_minus_S(i, i) += z;
   const auto chi = [&](const GiNaC::ex& at) {
-    zE_minus_S = -S;
-    for (int i = 0; i < 3; ++i) zE_minus_S(i, i) += at;
-    return GiNaC::ex(zE_minus_S.determinant());
+    return proofs::substitution(proofs::determinant_of(proofs::to_ginac<3, 3>(zE_minus_S)), z, at);
   };
   const GiNaC::symbol m1("m1"), m2("m2"), m3("m3"), theta("theta");
   proofs::SymbolicMatrix<3, 3> M = proofs::SymbolicMatrix<3, 3>::Zero();
   M(0, 0) = m1, M(1, 1) = m2, M(2, 2) = m3;
   const SymbolicInvariants diagonal = invariants(M);
   const local::Mat2<GiNaC::ex> R = local::rotation<GiNaC::ex>(theta);
-  const GiNaC::ex R3 = R.lazyProduct(R).eval().lazyProduct(R).eval()(0, 0), cos_t = GiNaC::cos(theta),
+  const GiNaC::ex R_g = proofs::to_ginac<2, 2>(R);
+  const GiNaC::ex R3 = proofs::entry(proofs::product({R_g, R_g, R_g}), 0), cos_t = GiNaC::cos(theta),
                   sin_t = GiNaC::sin(theta);
   return {
       {"ideal-certificate",
