@@ -29,17 +29,19 @@ Mat3<Scalar> cross_matrix(const Vec3<Scalar>& omega) {
 }
 
 /// exp [ω]× = I + (sin θ/θ) K + ((1 − cos θ)/θ²) K², θ = |ω|, K = [ω]× (Rodrigues). Any |ω|, so that a branch
-/// ω + 2πk ω/|ω| gives the same rotation. (1 − cos θ)/θ² is evaluated as ½ (sin(θ/2)/(θ/2))², which, unlike
-/// 1 − cos θ, keeps its relative accuracy as θ → 0; both coefficients are their limits at θ = 0.
+/// ω + 2πk ω/|ω| gives the same rotation. Both coefficients come from the half angle, s = sin(θ/2), c = cos(θ/2):
+/// sin θ/θ = 2sc/θ and (1 − cos θ)/θ² = 2s²/θ², which, unlike 1 − cos θ, keep their relative accuracy as θ → 0
+/// (one sine and one cosine a rotation); both are their limits at θ = 0.
 template <class Scalar>
 Mat3<Scalar> rotation_exp(const Vec3<Scalar>& omega) {
+  using std::cos;
   using std::sin;
   const Scalar theta = omega.norm();
   const Mat3<Scalar> K = cross_matrix(omega);
   Scalar a(1), b(0.5);
   if (theta > Scalar(0)) {
-    const Scalar half = theta / 2, sinc_half = sin(half) / half;
-    a = sin(theta) / theta;
+    const Scalar half = theta / 2, s = sin(half), sinc_half = s / half;
+    a = sinc_half * cos(half);
     b = sinc_half * sinc_half / 2;
   }
   return Mat3<Scalar>::Identity() + a * K + b * (K * K);
