@@ -63,11 +63,15 @@ void Blend3::Engine::decompose(const std::vector<Matrix3d>& maps, const DualGrap
   const auto m = static_cast<Index>(maps.size());
   Eigen::Matrix3Xd principal(3, m);
   std::vector<Matrix3d> logs(maps.size());
-  for (Index i = 0; i < m; ++i) {
-    const local3::Svd3<double> d = local3::svd3<double>(maps[static_cast<std::size_t>(i)]);
-    principal.col(i) = local3::rotation_log<double>(d.U * d.V.transpose());
-    logs[static_cast<std::size_t>(i)] = local3::log_stretch(d);
-  }
+  const auto elements = static_cast<std::size_t>(m);
+  global::for_each_range(elements, global::ranges_for(elements, decompositions_per_thread),
+                         [&](std::size_t first, std::size_t last) {
+                           for (auto i = static_cast<Index>(first); i < static_cast<Index>(last); ++i) {
+                             const local3::Svd3<double> d = local3::svd3<double>(maps[static_cast<std::size_t>(i)]);
+                             principal.col(i) = local3::rotation_log<double>(d.U * d.V.transpose());
+                             logs[static_cast<std::size_t>(i)] = local3::log_stretch(d);
+                           }
+                         });
   omega.push_back(options.rotation_branch == global::RotationBranch::consistent
                       ? consistent_logs(graph, principal, previous)
                       : principal);

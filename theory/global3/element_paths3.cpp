@@ -1,6 +1,7 @@
 #include "theory/global3/element_paths3.hpp"
 
 #include "theory/global/parallel_ranges.hpp"
+#include "theory/global3/frame_threads3.hpp"
 #include "theory/global3/local_maps3.hpp"
 #include "theory/local3/local3.hpp"
 
@@ -17,15 +18,20 @@ ElementPaths3::ElementPaths3(const std::vector<Matrix3d>& maps, LocalHomotopy ho
   Eigen::Matrix3Xd principal(3, m);
   omega_U_.resize(3, m), sigma_.resize(3, m), omega_V_.resize(3, m);
   stretch_.resize(maps.size());
-  for (Index i = 0; i < m; ++i) {
-    const local3::Svd3<double> d = local3::svd3<double>(maps[static_cast<std::size_t>(i)]);
-    principal.col(i) = local3::rotation_log<double>(d.U * d.V.transpose());
-    stretch_[static_cast<std::size_t>(i)] =
-        homotopy == LocalHomotopy::exp ? local3::log_stretch(d) : local3::polar3(d).S;
-    omega_U_.col(i) = local3::rotation_log<double>(d.U);
-    sigma_.col(i) = d.sigma;
-    omega_V_.col(i) = local3::rotation_log<double>(d.V.transpose());
-  }
+  // Each element's decomposition alone: split over threads on large meshes, the same values on any number.
+  const auto elements = static_cast<std::size_t>(m);
+  global::for_each_range(elements, global::ranges_for(elements, decompositions_per_thread),
+                         [&](std::size_t first, std::size_t last) {
+                           for (auto i = static_cast<Index>(first); i < static_cast<Index>(last); ++i) {
+                             const local3::Svd3<double> d = local3::svd3<double>(maps[static_cast<std::size_t>(i)]);
+                             principal.col(i) = local3::rotation_log<double>(d.U * d.V.transpose());
+                             stretch_[static_cast<std::size_t>(i)] =
+                                 homotopy == LocalHomotopy::exp ? local3::log_stretch(d) : local3::polar3(d).S;
+                             omega_U_.col(i) = local3::rotation_log<double>(d.U);
+                             sigma_.col(i) = d.sigma;
+                             omega_V_.col(i) = local3::rotation_log<double>(d.V.transpose());
+                           }
+                         });
   omega_ = branch == global::RotationBranch::consistent ? consistent_logs(graph, principal) : principal;
   for (Index i = 0; i < m; ++i)
     if (omega_.col(i) != principal.col(i))

@@ -74,21 +74,23 @@ void build_stars(PoissonSystem3::Data& data) {
 /// W_i, E_i⁺ and L's triplets (w_i C M_i Cᵀ) of every element.
 std::vector<Eigen::Triplet<double>> element_terms(const Mesh3& rest, PoissonSystem3::Data& data) {
   const int d = rest.corners() - 1;
-  const Eigen::MatrixXd C = edges_to_corners(d);
+  // Fixed-capacity types (no heap allocation per element): d ≤ 3.
+  using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4>;
+  const Small C = edges_to_corners(d);
   std::vector<Eigen::Triplet<double>> triplets;
   triplets.reserve(static_cast<std::size_t>(rest.element_count() * (d + 1) * (d + 1)));
   data.W.assign(static_cast<std::size_t>(rest.element_count()), Eigen::Matrix<double, 4, 3>::Zero());
   data.pinv.assign(data.W.size(), Matrix3d::Zero());
   data.edges.assign(data.W.size(), Matrix3d::Zero());
   for (Index i = 0; i < rest.element_count(); ++i) {
-    const Eigen::MatrixXd E = element_edges(rest, i);
-    const Eigen::MatrixXd M = (E.transpose() * E).inverse();
-    const Eigen::MatrixXd pinv = M * E.transpose();
+    const Small E = element_edges(rest, i);
+    const Small M = Small(E.transpose() * E).inverse();
+    const Small pinv = M * E.transpose();
     const double w = data.weights[i];
     data.pinv[static_cast<std::size_t>(i)].topRows(d) = pinv;
     data.edges[static_cast<std::size_t>(i)].leftCols(d) = E;
     data.W[static_cast<std::size_t>(i)].topRows(d + 1) = w * C * pinv;
-    const Eigen::MatrixXd K = w * C * M * C.transpose();
+    const Small K = w * C * M * C.transpose();
     for (int a = 0; a <= d; ++a)
       for (int b = 0; b <= d; ++b) triplets.emplace_back(rest.elements(a, i), rest.elements(b, i), K(a, b));
   }
