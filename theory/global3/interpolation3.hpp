@@ -6,13 +6,16 @@
 // decomposes each A_i, chooses the rotation branches and factors E^F's matrix once; a frame is the local maps,
 // a right-hand side and a solve.
 //
-// What does not carry over from the 2D engine (theory/global/interpolation.hpp): E^R and E^S, and so the blend
-// and the symmetrised E′. E^R's closed form (Kaji Appendix) minimises over similarities s R_δ by writing 2D
-// similarities as complex numbers, so that min_{s,δ} ‖s R_δ A − B‖² is a Hermitian form in the vertices; 3D
-// similarities s R (R ∈ SO(3)) form no field, min over R is an orthogonal Procrustes problem whose minimiser is
-// not linear in B, and the energy is no longer a quadratic form: no one-solve-per-frame counterpart exists.
-// The nearest sound 3D counterpart is a local/global (as-rigid-as-possible) refinement of each frame, an
-// iteration of SVDs and solves with this factor; it is not built.
+// What does not carry over from the 2D engine (theory/global/interpolation.hpp): E^R, E^S and so their blend.
+// E^R's closed form (Kaji Appendix) minimises over similarities s R_δ by writing 2D similarities as complex
+// numbers, so that min_{s,δ} ‖s R_δ A − B‖² is a Hermitian form in the vertices; 3D similarities s R (R ∈ SO(3))
+// form no field, the minimum over R is an orthogonal Procrustes problem whose minimiser is not linear in B, and the
+// energy is no longer a quadratic form: no one-solve-per-frame counterpart exists. E^S minimises over the same
+// similarities and fails the same way. The nearest sound 3D counterpart is a local/global (as-rigid-as-possible)
+// refinement of each frame, an iteration of per-element SVDs and solves with this factor (a frame's cost times the
+// iterations); it is not built. The symmetrised E′(t) = E(t) + E^{−1}(1 − t) does carry over for E^F (the reverse
+// problem's B_i is linear in the same vertices through the target's edges, so E′ stays a quadratic form with a
+// matrix constant in t); it is not built yet.
 #include "theory/global/options.hpp"
 #include "theory/global/refused_problem.hpp"
 #include "theory/global3/constraints3.hpp"
