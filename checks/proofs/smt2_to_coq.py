@@ -36,6 +36,8 @@ def term(e):
         return "(" + " + ".join(args) + ")"
     if op == "*":
         return "(" + " * ".join(args) + ")"
+    if op == "/":
+        return "(" + " / ".join(args) + ")"
     if op == "-":
         return "(- " + args[0] + ")" if len(args) == 1 else "(" + " - ".join(args) + ")"
     raise ValueError("unsupported term " + op)

@@ -1,22 +1,10 @@
 (* Stored quantifier-free sentences that a proof needs to be empty (reports/proofs/<claim>/<name>.smt2), each
    stated as "for all reals the asserted formula fails" (checks/proofs/smt2_to_coq.py prints the statement from
    the stored sentence; coq_test.sh checks that each theorem here states exactly that) and closed by a
-   Positivstellensatz certificate that the micromega tactics find and Coq's kernel checks. MANIFEST.json records
-   every sentence tried, with the attempts that failed. *)
+   Positivstellensatz certificate that the micromega tactics find and Coq's kernel checks. Written by
+   checks/proofs/coq_certify.py; MANIFEST.json records every sentence tried, with the attempts that failed. *)
 Require Import Reals Psatz Lra.
 Open Scope R_scope.
-
-(* thesis.thm-2.2.5/lemma.L4.norm-vs-square.smt2 *)
-Theorem thesis_thm_2_2_5__lemma_L4_norm_vs_square : forall a b : R, ~ (((a >= 0) /\ (b >= 0) /\ ((((a + ((- 1) * b)) <= 0) /\ (((a * a) + ((- 1) * b * b)) > 0)) \/ (((a + ((- 1) * b)) > 0) /\ (((a * a) + ((- 1) * b * b)) <= 0))))).
-Proof. intros; nra. Qed.
-
-(* thesis.thm-2.2.5/printed.second-conjunct-implied.smt2 *)
-Theorem thesis_thm_2_2_5__printed_second_conjunct_implied : forall x y h : R, ~ (((x > 0) /\ (y > 0) /\ ((((- 1) * h * h) + (x * y)) > 0) /\ ((1 + ((- 1) * h * h) + ((- 1) * x) + (x * y) + ((- 1) * y)) >= 0) /\ (((- 2) + x + y) < 0) /\ ((((- 1) + x) > 0) \/ (((- 1) + y) > 0)))).
-Proof. intros; nra. Qed.
-
-(* atlas.polar.norm/lemma.L4.norm-vs-square.smt2 *)
-Theorem atlas_polar_norm__lemma_L4_norm_vs_square : forall a b : R, ~ (((a >= 0) /\ (b >= 0) /\ ((((a + ((- 1) * b)) <= 0) /\ (((a * a) + ((- 1) * b * b)) > 0)) \/ (((a + ((- 1) * b)) > 0) /\ (((a * a) + ((- 1) * b * b)) <= 0))))).
-Proof. intros; nra. Qed.
 
 (* atlas.exp-log.area/cond-not-prop.residue.smt2 *)
 Theorem atlas_exp_log_area__cond_not_prop_residue : forall x y h : R, ~ (((x > 0) /\ (y > 0) /\ ((((- 1) * h * h) + (x * y)) > 0) /\ ((((- 1) * h * h) + (x * y)) <= 0))).
@@ -48,6 +36,10 @@ Proof. intros; nra. Qed.
 
 (* atlas.polar.area/prop-not-cond.E.smt2 *)
 Theorem atlas_polar_area__prop_not_cond_E : forall x y h : R, ~ (((x > 0) /\ (y > 0) /\ ((((- 1) * h * h) + (x * y)) > 0) /\ (((((- 2) * h * h) + ((- 1) * x) + (2 * x * y) + ((- 1) * y)) > 0) \/ (((- 2) + x + y) > 0)) /\ (((2 + ((- 1) * x) + ((- 1) * y)) > 0) \/ (((2 * h * h) + x + ((- 2) * x * y) + y) > 0)) /\ ((((- 1) * h * h) + (x * y)) > 0) /\ ((((- 2) + x + y) >= 0) \/ ((((- 2) * h * h) + ((- 1) * x) + (2 * x * y) + ((- 1) * y)) <= 0)) /\ ((((- 2) + x + y) <= 0) \/ ((((- 2) * h * h) + ((- 1) * x) + (2 * x * y) + ((- 1) * y)) >= 0)))).
+Proof. intros; nra. Qed.
+
+(* atlas.polar.norm/lemma.L4.norm-vs-square.smt2 *)
+Theorem atlas_polar_norm__lemma_L4_norm_vs_square : forall a b : R, ~ (((a >= 0) /\ (b >= 0) /\ ((((a + ((- 1) * b)) <= 0) /\ (((a * a) + ((- 1) * b * b)) > 0)) \/ (((a + ((- 1) * b)) > 0) /\ (((a * a) + ((- 1) * b * b)) <= 0))))).
 Proof. intros; nra. Qed.
 
 (* atlas.svd.area/cond-not-prop.E.smt2 *)
@@ -82,8 +74,24 @@ Proof. intros; nra. Qed.
 Theorem kaji_exp_det_positive__eigenvalue_not_positive : forall x y h l1 l2 : R, ~ (((x > 0) /\ (y > 0) /\ ((((- 1) * h * h) + (x * y)) > 0) /\ ((l1 + l2 + ((- 1) * x) + ((- 1) * y)) = 0) /\ (((h * h) + (l1 * l2) + ((- 1) * x * y)) = 0) /\ ((l1 <= 0) \/ (l2 <= 0)))).
 Proof. intros; nra. Qed.
 
+(* thesis.ex-2.2.4/decompositions-wrong.smt2 *)
+Theorem thesis_ex_2_2_4__decompositions_wrong : forall r3 : R, ~ (((((- 3) + (r3 * r3)) = 0) /\ (r3 > 0) /\ ((~ (((3 / 4) + ((- (1 / 4)) * r3 * r3)) = 0)) \/ (~ (((3 / 2) + ((- (1 / 2)) * r3 * r3)) = 0)) \/ (~ (((- (3 / 8)) + ((1 / 8) * r3 * r3)) = 0)) \/ (~ (((3 / 8) + ((- (1 / 8)) * r3 * r3)) = 0)) \/ (((35 / 16) + ((- (1 / 16)) * r3 * r3)) <= 0)))).
+Proof. intros; nra. Qed.
+
 (* thesis.ex-2.2.4/lemma.L4.norm-vs-square.smt2 *)
 Theorem thesis_ex_2_2_4__lemma_L4_norm_vs_square : forall a b : R, ~ (((a >= 0) /\ (b >= 0) /\ ((((a + ((- 1) * b)) <= 0) /\ (((a * a) + ((- 1) * b * b)) > 0)) \/ (((a + ((- 1) * b)) > 0) /\ (((a * a) + ((- 1) * b * b)) <= 0))))).
+Proof. intros; nra. Qed.
+
+(* thesis.ex-2.2.4/polar-not-good-area.L.smt2 *)
+Theorem thesis_ex_2_2_4__polar_not_good_area_L : forall r3 t ts tt ts1 tt1 : R, ~ (((((- 3) + (r3 * r3)) = 0) /\ (r3 > 0) /\ (((t >= 0) /\ (((- 1) + t) <= 0) /\ ((1 + ((- (1 / 16)) * r3 * r3 * t * t) + t + ((3 / 16) * t * t)) <= 0)) \/ ((ts >= 0) /\ ((ts + ((- 1) * tt)) <= 0) /\ (((- 1) + tt) <= 0) /\ ((((- (1 / 16)) * r3 * r3 * ts * ts) + ((1 / 16) * r3 * r3 * tt * tt) + ts + ((3 / 16) * ts * ts) + ((- 1) * tt) + ((- (3 / 16)) * tt * tt)) > 0) /\ (ts1 >= 0) /\ ((ts1 + ((- 1) * tt1)) <= 0) /\ (((- 1) + tt1) <= 0) /\ ((((- (1 / 16)) * r3 * r3 * ts1 * ts1) + ((1 / 16) * r3 * r3 * tt1 * tt1) + ts1 + ((3 / 16) * ts1 * ts1) + ((- 1) * tt1) + ((- (3 / 16)) * tt1 * tt1)) < 0))))).
+Proof. intros; nra. Qed.
+
+(* thesis.ex-2.2.4/polar-not-good-area.smt2 *)
+Theorem thesis_ex_2_2_4__polar_not_good_area : forall r3 t t1 t2 : R, ~ (((((- 3) + (r3 * r3)) = 0) /\ (r3 > 0) /\ (((t >= 0) /\ (((- 1) + t) <= 0) /\ ((1 + ((- (1 / 16)) * r3 * r3 * t * t) + t + ((3 / 16) * t * t)) <= 0)) \/ ((t1 >= 0) /\ (((- 1) + t1) <= 0) /\ ((1 + ((- (1 / 8)) * r3 * r3 * t1) + ((3 / 8) * t1)) < 0) /\ (t2 >= 0) /\ (((- 1) + t2) <= 0) /\ ((1 + ((- (1 / 8)) * r3 * r3 * t2) + ((3 / 8) * t2)) > 0))))).
+Proof. intros; nra. Qed.
+
+(* thesis.ex-2.2.4/polar-not-good-norm.smt2 *)
+Theorem thesis_ex_2_2_4__polar_not_good_norm : forall r3 v1 v2 : R, ~ (((((- 3) + (r3 * r3)) = 0) /\ (r3 > 0) /\ (((- 1) + (v1 * v1) + (v2 * v2)) = 0) /\ ((((((- 1) * r3 * v1 * v2) + ((1 / 2) * v1 * v1) + ((3 / 2) * v2 * v2)) < 0) /\ ((((- 2) * r3 * v1 * v2) + ((1 / 8) * r3 * r3 * v1 * v1) + ((1 / 8) * r3 * r3 * v2 * v2) + ((5 / 8) * v1 * v1) + ((21 / 8) * v2 * v2)) > 0)) \/ (((((- 1) * r3 * v1 * v2) + ((1 / 2) * v1 * v1) + ((3 / 2) * v2 * v2)) > 0) /\ ((((- 2) * r3 * v1 * v2) + ((1 / 8) * r3 * r3 * v1 * v1) + ((1 / 8) * r3 * r3 * v2 * v2) + ((5 / 8) * v1 * v1) + ((21 / 8) * v2 * v2)) < 0))))).
 Proof. intros; nra. Qed.
 
 (* thesis.ex-2.2.4/svd-not-good-area.L.smt2 *)
@@ -92,6 +100,14 @@ Proof. intros; nra. Qed.
 
 (* thesis.ex-2.2.4/svd-not-good-area.smt2 *)
 Theorem thesis_ex_2_2_4__svd_not_good_area : forall r3 t : R, ~ (((((- 3) + (r3 * r3)) = 0) /\ (r3 > 0) /\ (t >= 0) /\ (((- 1) + t) <= 0) /\ ((1 + t) <= 0))).
+Proof. intros; nra. Qed.
+
+(* thesis.sec-2.3.conic/corrected.on-conic-off-locus.smt2 *)
+Theorem thesis_sec_2_3_conic__corrected_on_conic_off_locus : forall x y : R, ~ ((((x + ((- 4) * x * y) + (x * x) + y + (y * y)) = 0) /\ (~ ((((- (1 / 3)) * x) + ((4 / 3) * x * y) + ((- (1 / 3)) * x * x) + ((- (1 / 3)) * y) + ((- (1 / 3)) * y * y)) = 0)))).
+Proof. intros; nra. Qed.
+
+(* thesis.sec-2.3.conic/corrected.on-locus-off-conic.smt2 *)
+Theorem thesis_sec_2_3_conic__corrected_on_locus_off_conic : forall x y : R, ~ ((((((- (1 / 3)) * x) + ((4 / 3) * x * y) + ((- (1 / 3)) * x * x) + ((- (1 / 3)) * y) + ((- (1 / 3)) * y * y)) = 0) /\ (~ ((x + ((- 4) * x * y) + (x * x) + y + (y * y)) = 0)))).
 Proof. intros; nra. Qed.
 
 (* thesis.sec-2.3.conic/denominator-not-positive.smt2 *)
@@ -144,6 +160,14 @@ Proof. intros; nra. Qed.
 
 (* thesis.thm-2.2.4/printed.prop-not-cond.E.smt2 *)
 Theorem thesis_thm_2_2_4__printed_prop_not_cond_E : forall x y h : R, ~ (((x > 0) /\ (y > 0) /\ ((((- 1) * h * h) + (x * y)) > 0) /\ (((- 1) + (h * h) + x + ((- 1) * x * y) + y) < 0) /\ (((((- 2) * h * h) + ((- 1) * x) + (2 * x * y) + ((- 1) * y)) > 0) \/ (((- 2) + x + y) >= 0)) /\ (((2 + ((- 1) * x) + ((- 1) * y)) > 0) \/ (((2 * h * h) + x + ((- 2) * x * y) + y) >= 0)) /\ ((((- 1) * h * h) + (x * y)) > 0) /\ ((((- 2) + x + y) >= 0) \/ ((((- 2) * h * h) + ((- 1) * x) + (2 * x * y) + ((- 1) * y)) <= 0)) /\ ((((- 2) + x + y) <= 0) \/ ((((- 2) * h * h) + ((- 1) * x) + (2 * x * y) + ((- 1) * y)) >= 0)))).
+Proof. intros; nra. Qed.
+
+(* thesis.thm-2.2.5/lemma.L4.norm-vs-square.smt2 *)
+Theorem thesis_thm_2_2_5__lemma_L4_norm_vs_square : forall a b : R, ~ (((a >= 0) /\ (b >= 0) /\ ((((a + ((- 1) * b)) <= 0) /\ (((a * a) + ((- 1) * b * b)) > 0)) \/ (((a + ((- 1) * b)) > 0) /\ (((a * a) + ((- 1) * b * b)) <= 0))))).
+Proof. intros; nra. Qed.
+
+(* thesis.thm-2.2.5/printed.second-conjunct-implied.smt2 *)
+Theorem thesis_thm_2_2_5__printed_second_conjunct_implied : forall x y h : R, ~ (((x > 0) /\ (y > 0) /\ ((((- 1) * h * h) + (x * y)) > 0) /\ ((1 + ((- 1) * h * h) + ((- 1) * x) + (x * y) + ((- 1) * y)) >= 0) /\ (((- 2) + x + y) < 0) /\ ((((- 1) + x) > 0) \/ (((- 1) + y) > 0)))).
 Proof. intros; nra. Qed.
 
 (* thesis.viete/eigen.k-outside-unit-interval.smt2 *)
