@@ -27,10 +27,9 @@ using GiNaC::ex;
 using GiNaC::matrix;
 
 /// The names of every symbol of the identities.
-const char* const names[] = {"t",  "a",  "b",  "c", "d",   "b11", "b12",  "b21", "b22", "v1",
-                             "v2", "co", "si", "x", "y",   "h",   "beta", "phi", "sg",  "pi",
-                             "B",  "l1", "l2", "E", "u11", "u12", "u21",  "u22", "l",
-                             "cc", "ss"};
+const char* const names[] = {"t",  "a",  "b",   "c",   "d",   "b11",  "b12", "b21", "b22", "v1", "v2",
+                             "co", "si", "x",   "y",   "h",   "beta", "phi", "sg",  "pi",  "B",  "l1",
+                             "l2", "E",  "u11", "u12", "u21", "u22",  "l",   "cc",  "ss"};
 
 /// One symbol per name, shared by every identity and by the parser of the committed scripts.
 const GiNaC::symbol& sym(const std::string& name) {
@@ -155,9 +154,8 @@ std::vector<Identity> lemma_identities() {
                   "||((1-t)I + tD)u||^2 = a^2 cos^2 psi + b^2 sin^2 psi, a = 1 + t(x-1), "
                   "b = 1 + t(y-1)",
                   fs, a * a * GiNaC::pow(GiNaC::cos(psi), 2) + b * b * GiNaC::pow(GiNaC::sin(psi), 2)});
-  list.push_back(
-      {"L9.derivative", "d/dt ||((1-t)I + tD)u(phi + t beta)||^2 = 2 u^T G_t u", fs_done.diff(sym("t")),
-       2 * form(G_t, u)});
+  list.push_back({"L9.derivative", "d/dt ||((1-t)I + tD)u(phi + t beta)||^2 = 2 u^T G_t u", fs_done.diff(sym("t")),
+                  2 * form(G_t, u)});
   list.push_back({"L9.G-is-4-det", "4 det G_t = G(t) = 4(x-1)(y-1)ab - beta^2 t^2 (x-y)^2 (2 + t(x+y-2))^2",
                   4 * determinant_of(G_t), G});
   const ex c0 = GiNaC::cos(sym("phi")), s0 = GiNaC::sin(sym("phi"));
@@ -184,10 +182,10 @@ std::vector<Identity> lemma_identities() {
                   substitution(Gs(t, B, pi), to_xy)});
   list.push_back({"L12.condition-is-G1", "G(1) = 4xy(x-1)(y-1) - beta^2 (x-y)^2 (x+y)^2", at(G, "t", 1),
                   4 * x * y * (x - 1) * (y - 1) - beta * beta * GiNaC::pow(x - y, 2) * GiNaC::pow(x + y, 2)});
-  list.push_back({"L12.image", "1 + sg + pi = xy, sg^2 - 4 pi = (x-y)^2, 2 + sg = x + y",
-                  column({substitution(1 + sg + pi, to_xy), substitution(sg * sg - 4 * pi, to_xy),
-                          substitution(2 + sg, to_xy)}),
-                  column({x * y, GiNaC::pow(x - y, 2), x + y})});
+  list.push_back(
+      {"L12.image", "1 + sg + pi = xy, sg^2 - 4 pi = (x-y)^2, 2 + sg = x + y",
+       column({substitution(1 + sg + pi, to_xy), substitution(sg * sg - 4 * pi, to_xy), substitution(2 + sg, to_xy)}),
+       column({x * y, GiNaC::pow(x - y, 2), x + y})});
   const ex C = GiNaC::pow(sg, 3) * (t * t * t + t * t + t) + sg * sg * pi * (t * t * t + t * t) +
                sg * sg * (t * t * t + 5 * t * t + 5 * t + 1) + 4 * sg * pi * t * t + 4 * sg * (t * t + 2 * t + 1) +
                4 * t + 4;
@@ -280,7 +278,8 @@ std::vector<std::pair<ex, ex>> sides_of(const std::string& script) {
         sides.emplace_back(parse(body.substr(0, i)), parse(body.substr(i + middle.size())));
         break;
       }
-      depth += (body[i] == '(' || body[i] == '[' || body[i] == '{') - (body[i] == ')' || body[i] == ']' || body[i] == '}');
+      depth +=
+          (body[i] == '(' || body[i] == '[' || body[i] == '{') - (body[i] == ')' || body[i] == ']' || body[i] == '}');
     }
   }
   return sides;

@@ -1,9 +1,9 @@
 // The steps an identity carries (step_nodes.hpp) performed by each checker: the exact grid with its own
 // arithmetic (a wrong derivative, substitution, product or determinant each found "non-zero"), GiNaC after
 // perform_steps, and ginsh reading the script's text.
+#include "experiments/proofs/step_nodes.hpp"
 #include "experiments/proofs/exact_grid.hpp"
 #include "experiments/proofs/identity.hpp"
-#include "experiments/proofs/step_nodes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -47,8 +47,8 @@ TEST(GridSteps, LowersTheDegreeOfTheVariableDifferentiated) {
 TEST(GridSteps, PerformsTheSubstitution) {
   const GiNaC::ex f = GiNaC::pow(t, 3) + a * t;
   EXPECT_TRUE(grid_zero(substitution(derivative(f, t), t, 2), 12 + a));
-  EXPECT_FALSE(grid_zero(substitution(derivative(f, t), t, 1), 12 + a));   // a wrong point
-  EXPECT_FALSE(grid_zero(derivative(substitution(f, t, 2), t), 12 + a));   // substituted first: d/dt of a constant
+  EXPECT_FALSE(grid_zero(substitution(derivative(f, t), t, 1), 12 + a));  // a wrong point
+  EXPECT_FALSE(grid_zero(derivative(substitution(f, t, 2), t), 12 + a));  // substituted first: d/dt of a constant
   EXPECT_TRUE(grid_zero(derivative(substitution(f, t, 2), t), 0));
   EXPECT_TRUE(grid_zero(substitution(s * s, s, x + 1), x * x + 2 * x + 1));  // a value that is an expression
   EXPECT_FALSE(grid_zero(substitution(s * s, s, x + 1), x * x + 1));
@@ -66,7 +66,7 @@ TEST(GridSteps, PerformsProductsTransposesAndDeterminants) {
   const GiNaC::ex right[] = {a * t, 2 * a + x, x * t, 2 * x + y * x};
   for (unsigned k = 0; k < 4; ++k) EXPECT_TRUE(grid_zero(entry(AB, k), right[k])) << k;
   EXPECT_FALSE(grid_zero(entry(product(B, A), 1), right[1]));  // the other order
-  EXPECT_FALSE(grid_zero(entry(AB, 2), right[1]));              // another entry
+  EXPECT_FALSE(grid_zero(entry(AB, 2), right[1]));             // another entry
   EXPECT_TRUE(grid_zero(entry(transposed(A), 1), x));
   EXPECT_FALSE(grid_zero(entry(transposed(A), 1), 1));
   EXPECT_TRUE(grid_zero(determinant_of(AB), (a * y - x) * t * x));
@@ -85,13 +85,11 @@ TEST(GridSteps, RefusesAStepItCannotPerform) {
 }
 
 TEST(StepNodes, GiNaCPerformsTheStepsOnACopy) {
-  const GiNaC::ex e = substitution(derivative(determinant_of(product(GiNaC::matrix{{a, t}, {1, x}},
-                                                                      GiNaC::matrix{{t, 0}, {0, 1}})),
-                                              t),
-                                   t, 1);
+  const GiNaC::ex e = substitution(
+      derivative(determinant_of(product(GiNaC::matrix{{a, t}, {1, x}}, GiNaC::matrix{{t, 0}, {0, 1}})), t), t, 1);
   EXPECT_TRUE(has_steps(e));
   EXPECT_TRUE((perform_steps(e) - (a * x - 2)).normal().is_zero());  // det [[at, t], [t, x]] = atx − t²
-  EXPECT_TRUE(has_steps(e));  // e itself unchanged
+  EXPECT_TRUE(has_steps(e));                                         // e itself unchanged
 }
 
 TEST(StepNodes, TheScriptTextReadsBackToTheSameTree) {

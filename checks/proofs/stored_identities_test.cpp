@@ -21,7 +21,8 @@ std::pair<std::string, std::string> sides(const std::string& line) {
   int depth = 0;
   for (std::size_t i = 0; i < body.size(); ++i) {
     if (depth == 0 && body.compare(i, 3, ")-(") == 0) return {body.substr(0, i), body.substr(i + 3)};
-    depth += (body[i] == '(' || body[i] == '[' || body[i] == '{') - (body[i] == ')' || body[i] == ']' || body[i] == '}');
+    depth +=
+        (body[i] == '(' || body[i] == '[' || body[i] == '{') - (body[i] == ')' || body[i] == ']' || body[i] == '}');
   }
   return {};
 }

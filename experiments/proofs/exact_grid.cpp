@@ -96,7 +96,8 @@ class Program {
   std::size_t total() const { return variables_.size(); }
   std::vector<unsigned> zeros() const { return std::vector<unsigned>(degree_slots(), 0); }
   unsigned derivative_depth() const {
-    return static_cast<unsigned>(std::count_if(scopes_.begin(), scopes_.end(), [](const Scope& s) { return s.derivative; }));
+    return static_cast<unsigned>(
+        std::count_if(scopes_.begin(), scopes_.end(), [](const Scope& s) { return s.derivative; }));
   }
 
   std::size_t constant(const Integer& numerator, const Integer& denominator) {
@@ -194,14 +195,13 @@ class Program {
     if (!GiNaC::is_a<GiNaC::symbol>(e.op(1))) throw std::invalid_argument("grid check: d/d of a non-symbol");
     const unsigned depth = derivative_depth();
     if (depth >= max_derivative_depth)
-      throw std::invalid_argument("grid check: derivatives nested deeper than " +
-                                  std::to_string(max_derivative_depth));
+      throw std::invalid_argument("grid check: derivatives nested deeper than " + std::to_string(max_derivative_depth));
     depth_used_ = std::max(depth_used_, depth + 1);
     const std::size_t x = variables_.index(e.op(1));
     bool lowers = true;
     for (const Scope& s : scopes_)
-      if (!s.derivative && (s.variable == x || nodes_[s.value].numerator_degree[x] > 0 ||
-                            nodes_[s.value].denominator_degree[x] > 0))
+      if (!s.derivative &&
+          (s.variable == x || nodes_[s.value].numerator_degree[x] > 0 || nodes_[s.value].denominator_degree[x] > 0))
         lowers = false;
     scopes_.push_back({true, x, depth, 0});
     const std::size_t child = compile(e.op(0));

@@ -56,7 +56,9 @@ Proof proof(const ClaimContext& ctx) {
   RotationLemma lemma;
   const auto rational = [&lemma](const Mat2<X>& M) { return lemma(proofs::to_ginac(M)); };
   // The products, transposes and determinants are left to the checkers; S and S^t are theory/local's.
-  const auto times = [&rational](const Mat2<X>& a, const Mat2<X>& b) { return proofs::product(rational(a), rational(b)); };
+  const auto times = [&rational](const Mat2<X>& a, const Mat2<X>& b) {
+    return proofs::product(rational(a), rational(b));
+  };
   const GiNaC::ex R_minus_beta_D_R_beta =
       proofs::product({rational(R_minus_beta), rational(D), rational(R_beta)});  // S by its definition
   const std::vector<proofs::Identity> identities = {

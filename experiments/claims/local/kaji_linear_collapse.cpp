@@ -49,10 +49,11 @@ Proof proof(const ClaimContext& ctx) {
       {"determinant", "det A^L(t) = (1 − 2t)² for A = −I", proofs::determinant_of(A_t), GiNaC::pow(1 - 2 * t, 2)},
       {"admissible", "det(−I) = 1 > 0", proofs::determinant_of(proofs::to_ginac<2, 2>(A_L.A)), X(1)},
   };
-  return proofs::identity_proof("A = −I and every real t",
-                                "identities over a symbol t from theory/local's LinearHomotopy, the substitution t = 1/2 "
-                                "and the determinants performed by each checker",
-                                proofs::prove_identities(identities, ctx.proof_files()));
+  return proofs::identity_proof(
+      "A = −I and every real t",
+      "identities over a symbol t from theory/local's LinearHomotopy, the substitution t = 1/2 "
+      "and the determinants performed by each checker",
+      proofs::prove_identities(identities, ctx.proof_files()));
 }
 
 Outcome check(const ClaimContext& ctx) {

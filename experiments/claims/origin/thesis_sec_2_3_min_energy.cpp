@@ -41,9 +41,10 @@ Proof proof(const ClaimContext& ctx) {
   identities.push_back({"denominator",
                         "x² + 2xy + y² − 2x − 2y + 3 = (x + y − 1)² + 2 (> 0: the printed value is defined)",
                         GiNaC::denom(origin::printed::min_E2()), GiNaC::pow(s.x + s.y - 1, 2) + 2});
-  identities.push_back(
-      {"value", "E2(o, o) at the printed minimiser = (2 + (x−1)x + (y−1)y)/(x² + 2xy + y² − 2x − 2y + 3)",
-       proofs::substitution(origin::thesis_study().E2_common, section_2_3::printed_minimiser()), origin::printed::min_E2()});
+  identities.push_back({"value",
+                        "E2(o, o) at the printed minimiser = (2 + (x−1)x + (y−1)y)/(x² + 2xy + y² − 2x − 2y + 3)",
+                        proofs::substitution(origin::thesis_study().E2_common, section_2_3::printed_minimiser()),
+                        origin::printed::min_E2()});
   return proofs::combined_proof(
       "every origin o = (x, y) in the real plane",
       "identities in x, y from theory/origin's E2(o, o) (Def. 2.3.2): the printed minimiser is stationary, the "
