@@ -16,6 +16,8 @@ std::string_view to_string(Chapter chapter) {
       return "sym3";
     case Chapter::atlas:
       return "atlas";
+    case Chapter::atlas3:
+      return "atlas3";
   }
   return "?";
 }
@@ -31,6 +33,8 @@ std::string_view report_section(Chapter chapter) {
       return "Exponential of 3×3 symmetric matrices (thesis ch. 3)";
     case Chapter::atlas:
       return "The goodness atlas (beyond the papers: where each homotopy is good, proved for all reals)";
+    case Chapter::atlas3:
+      return "The 3D goodness atlas (beyond the papers: the sequel Kaji et al. announce, for 3×3 maps)";
   }
   return "?";
 }

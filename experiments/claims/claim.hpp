@@ -17,7 +17,7 @@
 namespace affinterp::claims {
 
 /// The folders experiments/claims/<chapter>/, in the report's order.
-enum class Chapter { local, global, origin, sym3, atlas };
+enum class Chapter { local, global, origin, sym3, atlas, atlas3 };
 
 /// The chapter's folder name.
 std::string_view to_string(Chapter chapter);

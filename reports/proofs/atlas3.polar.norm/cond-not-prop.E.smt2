@@ -1,0 +1,10 @@
+; atlas3.polar.norm cond-not-prop.E
+(set-logic QF_NRA)
+(declare-const l1 Real)
+(declare-const l2 Real)
+(declare-const l3 Real)
+(declare-const v1 Real)
+(declare-const v2 Real)
+(declare-const v3 Real)
+(assert (and (> l1 0) (> l2 0) (> l3 0) (or (and (>= (+ (- 1) l1) 0) (>= (+ (- 1) l2) 0) (>= (+ (- 1) l3) 0)) (and (<= (+ (- 1) l1) 0) (<= (+ (- 1) l2) 0) (<= (+ (- 1) l3) 0))) (or (and (< (+ (* 2 l1 v1 v1) (* 2 l2 v2 v2) (* 2 l3 v3 v3) (* (- 2) v1 v1) (* (- 2) v2 v2) (* (- 2) v3 v3)) 0) (> (+ (* (- 2) l1 v1 v1) (* 2 l1 l1 v1 v1) (* (- 2) l2 v2 v2) (* 2 l2 l2 v2 v2) (* (- 2) l3 v3 v3) (* 2 l3 l3 v3 v3)) 0)) (and (> (+ (* 2 l1 v1 v1) (* 2 l2 v2 v2) (* 2 l3 v3 v3) (* (- 2) v1 v1) (* (- 2) v2 v2) (* (- 2) v3 v3)) 0) (< (+ (* (- 2) l1 v1 v1) (* 2 l1 l1 v1 v1) (* (- 2) l2 v2 v2) (* 2 l2 l2 v2 v2) (* (- 2) l3 v3 v3) (* 2 l3 l3 v3 v3)) 0)))))
+(check-sat)
