@@ -76,6 +76,8 @@ nlohmann::json to_json(const ClaimResult& result) {
       {"statement", result.claim->statement},
       {"verdict", to_string(o.verdict)},
       {"strength", to_string(o.strength)},
+      {"hand_steps", o.hand_steps},
+      {"kernel_checked", optional_json(o.kernel_checked)},
       {"summary", o.summary},
       {"evidence",
        {{"method", e.method},

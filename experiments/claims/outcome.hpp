@@ -23,7 +23,7 @@ struct Evidence {
   nlohmann::json measurements = nlohmann::json::object();  ///< timings and speeds: vary run to run
 };
 
-/// A proof for all reals (issue 10) and its sentences: experiments/proofs/proof.hpp.
+/// A proof for all reals and its sentences: experiments/proofs/proof.hpp.
 using proofs::Proof;
 using proofs::ProofSentence;
 
@@ -33,11 +33,16 @@ struct Outcome {
   std::string summary;                     ///< one line: what was found
   Evidence evidence;
   std::optional<Proof> proof;  ///< the proof for all reals, when there is one (strength proved)
+  /// The steps of a proved claim taken by hand, each a lemma of reports/proofs/LEMMAS.md by its ID: the check
+  /// names those outside its proof's methods, kernel_checks.hpp adds the named lemmas Coq has not checked.
+  std::vector<std::string> hand_steps;
+  /// "<file>: <theorem>" of reports/proofs/coq/ when the claim's statement is a theorem Coq's kernel checked.
+  std::optional<std::string> kernel_checked;
   /// Every input needed to re-verify independently: matrices as arrays of rows, exact values as
   /// "p/q" strings, parameters under the paper's own names (x, y, h, alpha, beta, A, v, t).
   nlohmann::json counterexample = nullptr;
   std::optional<std::string> correction;  ///< the corrected statement, for `corrected`
-  /// The exact region a goodness-atlas claim states, in the `affinterp decide` grammar (issue 10, item 4).
+  /// The exact region a goodness-atlas claim states, in the `affinterp decide` grammar.
   std::optional<std::string> condition;
   std::vector<std::string> figures;  ///< paths relative to the report's folder
 };

@@ -1,11 +1,11 @@
 #pragma once
-// How strong a verdict its proof makes it (issue 17), computed from what the checkers answered, never stated by
-// hand: `proved` when every sentence and identity of one complete formulation was answered by two independent
-// checkers and it cites nothing, `proved-one-decider` when some sentence by one only, `proved-citing` when the
-// method uses an external published theorem as a step (experiments/proofs/citations.hpp); no strength when a
-// sentence is unanswered, or when every sentence is structural (empty for propositional reasons alone: no evidence
-// for the claim) and nothing is cited. A proof's further formulations (Proof::formulations, e.g. the literal one)
-// are each a complete proof: one of them `proved` makes the claim `proved`; otherwise the lemma chain's label holds.
+// How strong a verdict its proof makes it, computed from what the checkers answered, never stated by hand: `proved`
+// when every sentence and identity of one complete formulation was answered by two independent checkers and it cites
+// nothing, `proved-one-decider` when some sentence by one only, `proved-citing` when the method uses an external
+// published theorem as a step (experiments/proofs/citations.hpp); no strength when a sentence is unanswered, or when
+// every sentence is structural (empty for propositional reasons alone: no evidence for the claim) and nothing is cited.
+// A proof's further formulations (Proof::formulations, e.g. the literal one) are each a complete proof: one of them
+// `proved` makes the claim `proved`; otherwise the lemma chain's label holds.
 #include "experiments/claims/verdict.hpp"
 #include "experiments/proofs/proof.hpp"
 
@@ -34,7 +34,8 @@ inline std::optional<Strength> proof_strength(const proofs::Proof& proof) {
 
 /// Whether `s` is one of the proved strengths.
 inline bool is_proved(Strength s) {
-  return s == Strength::proved || s == Strength::proved_one_decider || s == Strength::proved_citing;
+  return s == Strength::proved_kernel_checked || s == Strength::proved || s == Strength::proved_hand_steps ||
+         s == Strength::proved_one_decider || s == Strength::proved_citing;
 }
 
 }  // namespace affinterp::claims

@@ -1,5 +1,7 @@
 #include "experiments/claims/runner.hpp"
 
+#include "experiments/claims/kernel_checks.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <iomanip>
@@ -24,6 +26,7 @@ std::vector<ClaimResult> run_claims(const ClaimRegistry& registry, const RunCont
   // On a terminal the line shows "..." while a check runs and is then completed in place; in a log each
   // claim gets one line, written when its check ends.
   const bool terminal = &progress == &std::cerr && isatty(STDERR_FILENO) == 1;
+  const KernelChecks kernel = read_kernel_checks(context.answer_dir / "coq" / "MANIFEST.json");
   std::vector<ClaimResult> results;
   std::size_t index = 0;
   for (const Claim* claim : selected) {
@@ -37,6 +40,7 @@ std::vector<ClaimResult> run_claims(const ClaimRegistry& registry, const RunCont
       try {
         result.outcome = claim->check(context.for_claim(claim->id));
         if (result.outcome.strength == Strength::unstated) result.outcome.strength = claim->strength;
+        apply_kernel_checks(std::string(claim->id), result.outcome, kernel);
       } catch (const std::exception& e) {
         result.error = e.what();
       }

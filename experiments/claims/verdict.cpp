@@ -31,9 +31,11 @@ std::optional<Verdict> parse_verdict(std::string_view text) {
 }
 
 namespace {
-constexpr std::array<std::pair<Strength, std::string_view>, 8> strength_names{{
+constexpr std::array<std::pair<Strength, std::string_view>, 10> strength_names{{
     {Strength::unstated, "unstated"},
+    {Strength::proved_kernel_checked, "proved-kernel-checked"},
     {Strength::proved, "proved"},
+    {Strength::proved_hand_steps, "proved-with-hand-steps"},
     {Strength::proved_one_decider, "proved-one-decider"},
     {Strength::proved_citing, "proved-citing"},
     {Strength::exact_counterexample, "exact-counterexample"},

@@ -11,7 +11,15 @@ using nlohmann::json;
 std::string strength_words(const json& claim) {
   const std::string strength = claim.value("strength", "unstated");
   const json proof = claim.value("proof", json());
+  if (strength == "proved-kernel-checked")
+    return "proved, kernel-checked (Coq: " + claim.value("kernel_checked", std::string("?")) + ")";
   if (strength == "proved") return "proved for all reals";
+  if (strength == "proved-with-hand-steps") {
+    std::string steps;
+    for (const auto& step : claim.value("hand_steps", json::array()))
+      steps += (steps.empty() ? "" : ", ") + step.get<std::string>();
+    return "proved; " + steps + " by hand";
+  }
   if (strength == "proved-one-decider") return "proved, one decider (" + checkers(proof) + ")";
   if (strength == "proved-citing") return "proved, citing " + proof.value("cites", std::string("?"));
   if (strength == "exact-counterexample") {

@@ -1,5 +1,8 @@
 #include "reports/generator/legend.hpp"
 
+#include <map>
+#include <string>
+
 namespace affinterp::report {
 
 void write_verdict_legend(std::ostringstream& md) {
@@ -8,25 +11,33 @@ void write_verdict_legend(std::ostringstream& md) {
         "otherwise a sweep whose size, seed and tolerance are stated).\n"
         "- **refuted**: fails; the counterexample can be re-verified from claims.json alone.\n"
         "- **corrected**: fails as printed, holds after the stated correction.\n"
-        "- **reproduced** / **not-reproduced**: a measured figure compared with the paper's, on every recorded run "
-        "of the benchmarks (`bench/history/`, one entry per run, machine named): on each run its 95% bootstrap "
-        "interval over the benchmark's repetitions and processes lies inside / outside the band of values the "
-        "claim's wording allows (stated in the claim's rule; an interval across an edge of the band leaves that run "
-        "inconclusive), and every run says so.\n"
-        "- **machine-dependent**: a measured figure reproduced on one recorded run and not on another: a property "
-        "of the machine, not of the claim; the claim's table lists every run and its plot shows each run's "
-        "interval against the band. Runs that decide and agree while others are undecided leave the claim "
-        "inconclusive.\n"
+        "- **reproduced** / **not-reproduced**: a measured figure compared with the paper's on every recorded "
+        "machine (`bench/history/`, one entry per run; a machine is one CPU model, vector extension and compiler): "
+        "each machine's runs are pooled into one 95% interval (a bootstrap that resamples runs, then processes, "
+        "then repetitions), which lies inside / outside the band of values the claim's wording allows (stated in "
+        "the claim's rule; an interval across an edge of the band leaves that machine undecided), and every machine "
+        "says so. More runs of one machine narrow its interval; they cannot make the claim machine-dependent.\n"
+        "- **machine-dependent**: a measured figure reproduced on one machine and not on another: a property of "
+        "the machine, not of the claim; the claim's tables list each machine's pooled interval and its runs. "
+        "Machines that decide and agree while others are undecided leave the claim inconclusive.\n"
         "- **inconclusive**: not decided; the finding says why.\n"
         "- **pending**: no check implemented yet.\n\n";
 }
 
-void write_strength_legend(std::ostringstream& md) {
+void write_strength_legend(std::ostringstream& md, const nlohmann::json& claims) {
   md << "## Strength\n\n"
+        "- **proved, kernel-checked (Coq: file: theorem)**: proved for all reals as below, and the claim's "
+        "statement is also a theorem of `proofs/coq/` checked by Coq's kernel, every lemma and step of it in Coq, "
+        "resting on no axiom beyond the standard Reals library's (`proofs/coq/MANIFEST.json`; the test "
+        "`proofs.coq` compiles every file and prints each theorem's assumptions).\n"
+        "- **proved; Lk by hand**: proved for all reals as below, except that the named lemmas of "
+        "`proofs/LEMMAS.md` are proved there by hand and not yet checked by Coq's kernel.\n"
         "- **proved for all reals**: one complete formulation of the claim (and of its correction, if any) "
         "reduces, by the lemmas written out in `proofs/LEMMAS.md`, to first-order sentences over the reals each "
         "answered by two independent deciders (of QEPCAD B, Z3 and cvc5) and polynomial identities each checked by "
-        "two independent checkers (GiNaC, an exact degree grid), citing no external theorem; a transcript with an "
+        "two independent checkers (GiNaC, an exact degree grid) that each carry out the identity's step (derivative, "
+        "substitution, product), citing no external theorem, and every lemma it names checked by Coq's kernel; a "
+        "transcript with an "
         "error or a warning answers nothing. The sentence files and each decider's transcript are in `proofs/` "
         "and rerun with the tool alone. A proof may have several formulations: the lemma chain, and one taken "
         "as nearly as written from the paper's definition (Def 2.2.1: for all 0 <= s <= t <= 1; Def 2.2.2: for "
@@ -46,6 +57,11 @@ void write_strength_legend(std::ostringstream& md) {
         "tolerance in the evidence), not proved.\n"
         "- **measured**: a measured figure, with its 95% bootstrap interval over repeated runs, on each recorded "
         "machine.\n\n";
+  std::map<std::string, int> counts;
+  for (const auto& claim : claims) ++counts[claim.value("strength", "unstated")];
+  md << "Claims by strength (`strength` in claims.json):";
+  for (const auto& [words, count] : counts) md << " " << words << ": " << count << ";";
+  md << "\n\n";
 }
 
 }  // namespace affinterp::report

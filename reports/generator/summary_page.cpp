@@ -132,7 +132,7 @@ std::string render_summary_page(const json& doc) {
   write_areas(md, claims);
   write_engine_area(md, speed, scale, cli);
   write_verdict_legend(md);
-  write_strength_legend(md);
+  write_strength_legend(md, claims);
   write_engine_speed(md, speed);
   write_engine_scale(md, scale);
   write_engine_cli(md, cli);

@@ -65,7 +65,8 @@ inline const char* method() {
          "frobenius_quadratic: P̂D = [I; 0] (so 1ᵀD = 0, rank D = 2), the form is ‖A − VD‖², Hτ = 0 and gᵀτ = 0; "
          "for every mesh Σ w_i E^F sums them, vᵀGv = Σ w_i‖V_iD_i‖² vanishes only where every triangle is one "
          "point, i.e. (one connected piece) on the translations; a pinned vertex makes G + pin positive definite. "
-         "That sum-and-connectivity step is argued, not decided by a checker";
+         "That sum-and-connectivity step is Lemma L23 (positive weights, non-degenerate source triangles, a connected "
+         "mesh)";
 }
 
 }  // namespace affinterp::claims::frame_identities

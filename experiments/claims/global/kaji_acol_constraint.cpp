@@ -13,7 +13,8 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::global,
     .where = "Kaji §4",
     .statement = "The Alexa et al. constraint as printed, ‖(1−t)p1 + t p1 − v1(t)‖², with E^F yields an interpolation "
-                 "that reaches the target, B(1) p_k = q_k.",
+                 "that reaches the target, B(1) p_k = q_k (for positive weights, non-degenerate source triangles and "
+                 "a connected mesh).",
     .strength = Strength::exact_counterexample,
     .check = check,
 }};
@@ -54,7 +55,8 @@ Proof proof(const ClaimContext& ctx) {
       "every mesh pair (P, Q) in one connected piece, at t = 1, both constraints",
       std::string(frame_identities::method()) +
           "; at t = 1 every homotopy gives A_i(1) = A_i = Q_i D_i, so v = Q zeroes every E^F: with (1−t)p1 + t q1 the "
-          "unique minimiser is Q, with the printed (1−t)p1 + t p1 it is Q + (p1 − q1)1ᵀ, which misses Q when p1 ≠ q1",
+          "unique minimiser is Q, with the printed (1−t)p1 + t p1 it is Q + (p1 − q1)1ᵀ, which misses Q when p1 ≠ q1 "
+          "(Lemma L24)",
       proofs::prove_identities(frame_identities::identities(), ctx.proof_files()));
 }
 

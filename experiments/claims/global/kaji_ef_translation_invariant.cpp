@@ -14,7 +14,8 @@ const ClaimDeclaration claim{{
     .chapter = Chapter::global,
     .where = "Kaji §4",
     .statement =
-        "The global E^F error is translation invariant, and a constraint of two dimensions makes its minimiser unique.",
+        "The global E^F error is translation invariant, and a constraint of two dimensions makes its minimiser unique "
+        "(for positive weights, non-degenerate source triangles and a connected mesh).",
     .strength = Strength::sample,
     .check = check,
 }};

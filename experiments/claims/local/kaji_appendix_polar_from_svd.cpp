@@ -78,7 +78,8 @@ Proof proof(const ClaimContext& ctx) {
       "identities over symbols from theory/local's polar_from_svd and spd_power, cos and sin of the angles by the "
       "addition formulas and the half-angle parametrisation (a polynomial identity in cos, sin on the circle minus "
       "one point holds on the circle); a symmetric S with positive trace and determinant is positive definite; S^t "
-      "for real t is R_{−β} D^t R_{−β}ᵀ by the spectral definition once S R_{−β} = R_{−β} D, R_{−β} orthogonal. Not "
+      "for real t is R_{−β} D^t R_{−β}ᵀ by the spectral definition once S R_{−β} = R_{−β} D, R_{−β} orthogonal (Lemma "
+      "L20: S^t does not depend on the decomposition). Not "
       "proved here: that svd() and polar_decomposition() (atan2, hypot) compute these factors (Real50 grid only)",
       proofs::prove_identities(identities, ctx.proof_files()));
 }

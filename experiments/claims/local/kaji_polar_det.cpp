@@ -69,7 +69,8 @@ ProofPlan proof_plan() {
   ProofPlan plan{
       "S = [[x, h], [h, y]] real positive definite (A = R_theta S in GL+(2)), t real",
       "det A^P(t) = det R_{t theta} det((1-t)I + tS) with det R = c^2 + s^2 = 1 (Lemma L5, identity); the singular "
-      "values of A = RS are the eigenvalues of S as (RS)^T(RS) = (c^2 + s^2) S^2 (identities); eigenvalues as "
+      "values of A = RS are the eigenvalues of S as (RS)^T(RS) = (c^2 + s^2) S^2 (identities; Lemma L22); eigenvalues "
+      "as "
       "the pair with l1 + l2 = tr S, l1 l2 = det S. Both sentences empty = the factorisation holds for all reals",
       {sentence("eigenvalues-exist-positive", "a positive definite S without two positive eigenvalues", {"x", "y", "h"},
                 spd && !logic::exists({"l1", "l2"}, logic::greater(l1, 0) && logic::greater(l2, 0) && eigenvalues)),

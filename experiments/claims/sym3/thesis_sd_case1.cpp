@@ -38,7 +38,7 @@ Proof proof(const ClaimContext& ctx) {
   return proofs::identity_proof(
       "every real λ1 (symmetric S with a triple eigenvalue, i.e. S = λ1 E)",
       "a rational identity in λ1 and e^λ1 (an independent variable on the grid) from theory/sym3's case 1 over "
-      "symbols; exp S = xS² + yS + zE follows by the spectral theorem",
+      "symbols; exp S = xS² + yS + zE follows by Lemma L20 (the spectral theorem)",
       {proofs::prove_identity({"interpolates-at-l1", "x l1² + y l1 + z = exp(l1)", p_at_l1, GiNaC::exp(l1)},
                               ctx.proof_files())});
 }

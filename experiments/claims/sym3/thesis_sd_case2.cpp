@@ -45,7 +45,7 @@ Proof proof(const ClaimContext& ctx) {
       "all real λ1 = λ2 ≠ λ3 (symmetric S with exactly two equal eigenvalues)",
       "rational identities in λ2, λ3 and e^λ2, e^λ3 (independent variables on the grid) from theory/sym3's case 2 "
       "over symbols: the coefficients interpolate exp on the spectrum; exp S = xS² + yS + zE follows by the "
-      "spectral theorem (S symmetric is diagonalisable)",
+      "spectral theorem (S symmetric is diagonalisable, Lemma L20)",
       proofs::prove_identities(identities, ctx.proof_files()));
 }
 

@@ -63,7 +63,7 @@ Proof proof(const ClaimContext& ctx) {
       "all distinct real eigenvalues λ1, λ2, λ3",
       "rational identities in λ1, λ2, λ3 and e^λ1, e^λ2, e^λ3 (independent variables on the grid) from theory/sym3's "
       "case 3 over symbols: the corrected x interpolates exp at the eigenvalues, the printed x does not; exp S = "
-      "xS² + yS + zE follows by the spectral theorem",
+      "xS² + yS + zE follows by the spectral theorem (Lemma L20)",
       proofs::prove_identities(identities, ctx.proof_files()));
 }
 

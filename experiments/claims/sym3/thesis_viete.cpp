@@ -181,7 +181,8 @@ Proof proof(const ClaimContext& ctx) {
       "every real symmetric 3×3 S",
       "identities over symbols from theory/sym3's printed p and q: an ideal certificate that the printed λ are the "
       "roots of the characteristic polynomial when 4w³ − 3w = k, p ≤ 0 as a sum of squares, |k| ≤ 1 from the "
-      "discriminant, and the triple angle; sentences: p ≤ 0, p = 0 only at scalar S, |k| ≤ 1",
+      "discriminant, and the triple angle, so that the printed λ are the eigenvalues with multiplicity (Lemma L21); "
+      "sentences: p ≤ 0, p = 0 only at scalar S, |k| ≤ 1",
       proofs::prove_identities(viete_identities(), ctx.proof_files()), std::move(decided));
 }
 
