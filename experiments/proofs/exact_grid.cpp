@@ -1,11 +1,14 @@
 #include "experiments/proofs/exact_grid.hpp"
 
+#include "experiments/proofs/expanded_polynomial.hpp"
 #include "experiments/proofs/ginac_polynomial.hpp"
 #include "experiments/proofs/step_nodes.hpp"
 #include "theory/exact/rational.hpp"
 
 #include <algorithm>
 #include <array>
+#include <optional>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -18,7 +21,7 @@ using exact::Integer;
 /// the degree of n and of d in each variable. n and d are jets (see Jet below): the bounds hold for each of their
 /// coefficients.
 struct Node {
-  enum class Op { constant, variable, bound, sum, product, power, derivative } op = Op::constant;
+  enum class Op { constant, variable, bound, sum, product, power, derivative, function } op = Op::constant;
   std::vector<std::size_t> children;       ///< earlier nodes
   long exponent = 0;                       ///< power
   Integer numerator = 0, denominator = 1;  ///< constant
@@ -26,40 +29,49 @@ struct Node {
   std::size_t source = 0;                  ///< bound: the node of the value substituted
   unsigned slots = 0;                      ///< variable, bound: the derivatives that shift it (bit j: ε_j)
   unsigned slot = 0;                       ///< derivative: its ε_j
+  /// function: f(g) for f = cos, sin or exp, `variable` its value's grid variable, `partner` that of sin(g),
+  /// cos(g) or exp(g) (f's derivative up to sign), children = {g}.
+  enum class Function { cos, sin, exp } function = Function::cos;
+  std::size_t partner = 0;
   std::vector<unsigned> numerator_degree, denominator_degree;
   bool denominator_is_one = true;  ///< structurally: d is the constant 1
 };
 
-/// Symbols and functions (read as variables), indexed in the order they are first asked for.
+/// The grid's variables by name: symbols, and functions such as cos(g) (named by g expanded), indexed in the order
+/// they are first asked for. A first compilation discovers them (up to `capacity`); the second is given them in
+/// alphabetical order, so that the grid and its record do not depend on GiNaC's order of terms.
 class Variables {
  public:
-  std::size_t index(const GiNaC::ex& e) {
-    const auto [at, added] = index_.emplace(e, names_.size());
+  explicit Variables(std::size_t capacity) : capacity_(capacity) {}
+  explicit Variables(const std::vector<std::string>& names) : capacity_(names.size()) {
+    for (const std::string& name : names) index(name);
+  }
+  std::size_t index(const std::string& name) {
+    const auto [at, added] = index_.emplace(name, names_.size());
     if (added) {
-      std::ostringstream name;
-      name << e;
-      names_.push_back(name.str());
+      if (names_.size() == capacity_) throw std::invalid_argument("grid check: too many variables");
+      names_.push_back(name);
     }
     return at->second;
   }
   std::size_t size() const { return names_.size(); }
+  /// The length of the degree vectors: the variables there can be.
+  std::size_t capacity() const { return capacity_; }
   const std::vector<std::string>& names() const { return names_; }
 
  private:
-  std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less> index_;
+  std::size_t capacity_;
+  std::map<std::string, std::size_t> index_;
   std::vector<std::string> names_;
 };
 
-/// The symbols and functions of `e`, by name; the steps are looked into, not read as variables.
-void collect(const GiNaC::ex& e, std::map<std::string, GiNaC::ex>& found) {
-  if (GiNaC::is_a<GiNaC::symbol>(e) || (GiNaC::is_a<GiNaC::function>(e) && step_of(e) == Step::none)) {
-    std::ostringstream name;
-    name << e;
-    found.emplace(name.str(), e);
-    return;
-  }
-  for (std::size_t i = 0; i < e.nops(); ++i) collect(e.op(i), found);
+/// The names of the symbols of `e`.
+void symbols_of(const GiNaC::ex& e, std::set<std::string>& found) {
+  if (GiNaC::is_a<GiNaC::symbol>(e)) found.insert(GiNaC::ex_to<GiNaC::symbol>(e).get_name());
+  for (std::size_t i = 0; i < e.nops(); ++i) symbols_of(e.op(i), found);
 }
+
+std::string symbol_name(const GiNaC::ex& e) { return GiNaC::ex_to<GiNaC::symbol>(e).get_name(); }
 
 Integer to_integer(const GiNaC::numeric& n) {
   std::ostringstream text;
@@ -69,6 +81,8 @@ Integer to_integer(const GiNaC::numeric& n) {
 
 /// The derivatives nested in one side, at most: each nesting level is one ε_j of the jets.
 constexpr unsigned max_derivative_depth = 2;
+/// The variables of one identity, at most (the first compilation's degree vectors are this long).
+constexpr std::size_t max_variables = 256;
 
 class Program {
  public:
@@ -83,8 +97,9 @@ class Program {
   struct Scope {
     bool derivative;
     std::size_t variable;
-    unsigned slot = 0;      ///< derivative
-    std::size_t value = 0;  ///< substitution
+    unsigned slot = 0;                             ///< derivative
+    std::size_t value = 0;                         ///< substitution
+    std::optional<ExpandedPolynomial> polynomial;  ///< substitution: the value expanded, when it is a polynomial
   };
 
   std::size_t push(Node node) {
@@ -92,8 +107,8 @@ class Program {
     return nodes_.size() - 1;
   }
   /// A degree bound per variable, and last the bound of the total degree, which follows the same rules.
-  std::size_t degree_slots() const { return variables_.size() + 1; }
-  std::size_t total() const { return variables_.size(); }
+  std::size_t degree_slots() const { return variables_.capacity() + 1; }
+  std::size_t total() const { return variables_.capacity(); }
   std::vector<unsigned> zeros() const { return std::vector<unsigned>(degree_slots(), 0); }
   unsigned derivative_depth() const {
     return static_cast<unsigned>(
@@ -138,7 +153,7 @@ class Program {
   /// derivative d/dx between that and here (dual numbers: f(x + ε) = f(x) + ε f'(x)).
   std::size_t leaf(const GiNaC::ex& e) {
     Node node;
-    node.variable = variables_.index(e);
+    node.variable = variables_.index(symbol_name(e));
     node.op = Node::Op::variable;
     for (auto s = scopes_.rbegin(); s != scopes_.rend(); ++s) {
       if (s->variable != node.variable) continue;
@@ -166,26 +181,62 @@ class Program {
     return push(std::move(node));
   }
 
-  /// A function such as cos(φ + tβ) is an independent variable; a step on a symbol of its argument is refused
-  /// (the checker has no rules for the function's derivative or for identifying cos(φ + 0β) with cos(φ)).
+  /// A function f(g) is an independent variable of the grid (an identity in it holds for f(g) in particular),
+  /// named by f and g expanded with the open substitutions applied, so that cos(φ + tβ) at t = 0 is cos(φ). Under
+  /// a derivative d/dt with t in g, f = cos, sin, exp follow the chain rule (function_of_jet); any other function,
+  /// or an argument that is not a polynomial, is refused.
   std::size_t function_leaf(const GiNaC::ex& e) {
-    const std::map<std::string, GiNaC::ex> symbols = symbols_of(e);
-    for (const Scope& s : scopes_)
-      if (symbols.count(variables_.names()[s.variable]))
-        throw std::invalid_argument("grid check: a step on " + variables_.names()[s.variable] + " inside " +
-                                    text_of(e));
+    std::set<std::string> symbols;
+    symbols_of(e, symbols);
+    std::map<std::string, ExpandedPolynomial> values;
+    bool stepped = false;  // a derivative or substitution acts on a symbol of the argument
+    for (const Scope& s : scopes_) {
+      const std::string& name = variables_.names()[s.variable];
+      if (!symbols.count(name)) continue;
+      stepped = true;
+      if (!s.derivative && !s.polynomial)
+        throw std::invalid_argument("grid check: a substitution of a non-polynomial into " + text_of(e));
+      if (!s.derivative) values[name] = *s.polynomial;
+    }
+    const std::string f = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    if (stepped && (e.nops() != 1 || (f != "cos" && f != "sin" && f != "exp")))
+      throw std::invalid_argument("grid check: a step on a symbol inside " + text_of(e));
+    const auto name = [&](const std::string& function) {
+      return function + "(" + to_text(expanded(e.op(0), values)) + ")";
+    };
+    const auto argument_error = [&] {
+      return std::invalid_argument("grid check: not a polynomial argument: " + text_of(e));
+    };
     Node node;
     node.op = Node::Op::variable;
-    node.variable = variables_.index(e);
     node.numerator_degree = node.denominator_degree = zeros();
-    node.numerator_degree[node.variable] = node.numerator_degree[total()] = 1;
+    try {
+      node.variable = variables_.index(stepped || e.nops() == 1 ? name(f) : text_of(e));
+    } catch (const std::invalid_argument&) {
+      if (stepped) throw argument_error();
+      node.variable = variables_.index(text_of(e));  // a function of no polynomial argument, stepped by nothing
+    }
+    if (!stepped) {
+      node.numerator_degree[node.variable] = node.numerator_degree[total()] = 1;
+      return push(std::move(node));
+    }
+    if (expanded(e.op(0), values).terms.count({}) == expanded(e.op(0), values).terms.size())
+      throw std::invalid_argument("grid check: " + f + " of a number after a substitution: " + text_of(e));
+    node.op = Node::Op::function;
+    node.function = f == "cos" ? Node::Function::cos : f == "sin" ? Node::Function::sin : Node::Function::exp;
+    node.partner = variables_.index(name(f == "cos" ? "sin" : f == "sin" ? "cos" : "exp"));
+    node.children = {compile(e.op(0))};
+    const Node& g = nodes_[node.children.front()];
+    if (!g.denominator_is_one) throw argument_error();
+    // f(g0 + h) = F (1 − h²/2) ∓ P h for cos and sin, E (1 + h + h²/2) for exp, h = g − g0 (h³ = 0): each coefficient
+    // is bounded by F's, P's or E's degree 1 plus twice g's bound.
+    for (std::size_t v = 0; v < degree_slots(); ++v)
+      node.numerator_degree[v] =
+          2 * g.numerator_degree[v] + (v == node.variable || v == node.partner || v == total() ? 1 : 0);
+    // d/dt of f(g) is not ∂/∂t of the grid variable F: no derivative around this one lowers its degree.
+    for (const Scope& s : scopes_)
+      if (s.derivative && symbols.count(variables_.names()[s.variable])) chain_rule_in_slot_ |= 1u << s.slot;
     return push(std::move(node));
-  }
-
-  static std::map<std::string, GiNaC::ex> symbols_of(const GiNaC::ex& e) {
-    std::map<std::string, GiNaC::ex> found;
-    for (std::size_t i = 0; i < e.nops(); ++i) collect(e.op(i), found);
-    return found;
   }
 
   /// d/dx of the child, the quotient rule on its jets: (n/d)' = (n' d − n d')/d². Degree bounds: n' d − n d' is
@@ -197,15 +248,17 @@ class Program {
     if (depth >= max_derivative_depth)
       throw std::invalid_argument("grid check: derivatives nested deeper than " + std::to_string(max_derivative_depth));
     depth_used_ = std::max(depth_used_, depth + 1);
-    const std::size_t x = variables_.index(e.op(1));
+    const std::size_t x = variables_.index(symbol_name(e.op(1)));
     bool lowers = true;
     for (const Scope& s : scopes_)
       if (!s.derivative &&
           (s.variable == x || nodes_[s.value].numerator_degree[x] > 0 || nodes_[s.value].denominator_degree[x] > 0))
         lowers = false;
-    scopes_.push_back({true, x, depth, 0});
+    scopes_.push_back({true, x, depth, 0, {}});
+    chain_rule_in_slot_ &= ~(1u << depth);
     const std::size_t child = compile(e.op(0));
     scopes_.pop_back();
+    lowers = lowers && !(chain_rule_in_slot_ & (1u << depth));
 
     const Node& c = nodes_[child];
     Node node;
@@ -225,6 +278,14 @@ class Program {
     return push(std::move(node));
   }
 
+  /// The open substitutions' polynomial values, innermost first for each symbol.
+  std::map<std::string, ExpandedPolynomial> bound_values() const {
+    std::map<std::string, ExpandedPolynomial> values;
+    for (auto s = scopes_.rbegin(); s != scopes_.rend(); ++s)
+      if (!s->derivative && s->polynomial) values.emplace(variables_.names()[s->variable], *s->polynomial);
+    return values;
+  }
+
   /// e with x = v: v compiled here, then e with x bound to it.
   std::size_t substitution(const GiNaC::ex& e) {
     const GiNaC::ex x = e.op(1).op(0);
@@ -232,7 +293,13 @@ class Program {
         !GiNaC::is_a<GiNaC::lst>(e.op(2)) || e.op(2).nops() != 1)
       throw std::invalid_argument("grid check: a substitution not of one symbol");
     const std::size_t value = compile(e.op(2).op(0));
-    scopes_.push_back({false, variables_.index(x), 0, value});
+    std::optional<ExpandedPolynomial> polynomial;
+    try {
+      polynomial = expanded(e.op(2).op(0), bound_values());
+    } catch (const std::invalid_argument&) {
+      // not a polynomial: only a function of x inside would need it, and refuses then
+    }
+    scopes_.push_back({false, variables_.index(symbol_name(x)), 0, value, polynomial});
     const std::size_t result = compile(e.op(0));
     scopes_.pop_back();
     return result;
@@ -356,6 +423,7 @@ class Program {
   Variables& variables_;
   std::vector<Node> nodes_;
   std::vector<Scope> scopes_;
+  unsigned chain_rule_in_slot_ = 0;  ///< bit j: a function leaf follows the chain rule under derivative j
   unsigned depth_used_ = 0;
   std::size_t root_ = 0;
 };
@@ -441,6 +509,26 @@ std::pair<Jet<Int>, Jet<Int>> split(const Jet<Int>& a, unsigned j) {
   return {a0, a1};
 }
 
+/// f(g) as a jet, F and P the grid's values of f(g0) and of its partner (sin for cos, cos for sin, exp for exp):
+/// with h = g − g0, h³ = 0 (at most two ε), so cos(g0 + h) = F (1 − h²/2) − P h, sin(g0 + h) = F (1 − h²/2) + P h,
+/// exp(g0 + h) = F (1 + h + h²/2), h²/2 = h_{ε0} h_{ε1} ε0 ε1 (the chain rule, to second order).
+template <class Int>
+Jet<Int> function_of_jet(const Node& node, const Int& F, const Int& P, const Jet<Int>& g) {
+  Jet<Int> h = g, half_h2 = jet(Int(0), g.size);
+  h.c[0] = Int(0);
+  if (g.size == 4) half_h2.c[3] = mul(h.c[1], h.c[2]);
+  const Jet<Int> f = jet(F, g.size), p = jet(P, g.size);
+  switch (node.function) {
+    case Node::Function::cos:
+      return add(add(f, negate(mul(f, half_h2))), negate(mul(p, h)));
+    case Node::Function::sin:
+      return add(add(f, negate(mul(f, half_h2))), mul(p, h));
+    case Node::Function::exp:
+      break;
+  }
+  return add(add(f, mul(f, h)), mul(f, half_h2));
+}
+
 template <class Int>
 struct Fraction {
   Jet<Int> n, d;
@@ -495,6 +583,10 @@ Fraction<Int> evaluate(const Program& program, const std::vector<unsigned>& at, 
         value = node.exponent < 0 ? Fraction<Int>{p.d, p.n} : p;
         break;
       }
+      case Node::Op::function:
+        value = {function_of_jet(node, Int(at[node.variable]), Int(at[node.partner]), values[node.children.front()].n),
+                 jet(Int(1), size)};
+        break;
       case Node::Op::derivative: {
         const Fraction<Int>& c = values[node.children.front()];
         const auto [n0, n1] = split(c.n, node.slot);
@@ -583,10 +675,11 @@ GridVerdict grid_check(const GiNaC::ex& lhs, const GiNaC::ex& rhs, std::uint64_t
   } else {
     entries.emplace_back(lhs, rhs);
   }
-  std::map<std::string, GiNaC::ex> found;  // by name, so that the grid's variables come in alphabetical order
-  for (const auto& [l, r] : entries) collect(l, found), collect(r, found);
-  Variables variables;
-  for (const auto& [name, e] : found) variables.index(e);
+  Variables discovered(max_variables);
+  for (const auto& [l, r] : entries) Program(l, discovered), Program(r, discovered);
+  std::vector<std::string> names = discovered.names();
+  std::sort(names.begin(), names.end());
+  Variables variables(names);
   std::vector<EntryCheck> checks;
   for (const auto& [l, r] : entries)
     checks.push_back({Program(l, variables), Program(r, variables), {}, {}, {}, {}, {}});

@@ -27,9 +27,19 @@
 //   matrices             a product's entries are the sums Σ_k A_ik B_kj of products of the factors' entries, a
 //                        transpose swaps indices, a determinant (at most 4 × 4) is Leibniz's signed sum
 //                        Σ_σ sgn σ Π_i M_iσ(i): sums and products of fractions, bounded as above.
+//   functions            f(g) is an independent grid variable F, named by f and g expanded by the grid's own
+//                        polynomial arithmetic with the open substitutions applied (expanded_polynomial.hpp: cos(φ +
+//                        tβ) at t = 0 is the variable cos(φ)). Under d/dt with t in g, f = cos, sin, exp follow the
+//                        chain rule to second order with P its partner (sin, cos, exp) another grid variable: with
+//                        h = g − g(0 ε), cos(g) = F(1 − h²/2) − P h, sin(g) = F(1 − h²/2) + P h, exp(g) = F(1 + h +
+//                        h²/2). So the grid decides an identity in independent F, P, …; it holds for F = cos g,
+//                        P = sin g in particular, and these jets are what the derivation d/dt with dF = −P dg,
+//                        dP = F dg gives, which the chain rule makes d/dt of the functions themselves. No degree is
+//                        lowered under such a derivative (F does not depend on t on the grid, its jet does). Other
+//                        functions, non-polynomial arguments, and a function of a number after a substitution
+//                        (cos 0: the grid does not know it is 1) are refused.
 // Each is exact polynomial arithmetic on n and d, so N stays a polynomial whose degrees the bounds dominate, and
-// the lemma above applies as before. A step on a symbol inside a function (d/dt cos(φ + tβ)) is refused: the
-// grid has no rule for the function's derivative, nor for identifying cos(φ + 0·β) with cos(φ).
+// the lemma above applies as before.
 // What it shares with GiNaC is the tree: GiNaC's constructors flatten sums and products, collect numeric
 // coefficients of equal terms and combine equal factors (x·x⁻¹ = 1), but never expand a product or a power of a
 // sum and never cancel a common factor that is not literally equal; they perform none of the steps. The two
