@@ -61,4 +61,38 @@ TEST(Decide, LinearNormInSymmetricSkewCoordinates) {
   EXPECT_TRUE(v.counterexample->checked_by_suite);
 }
 
+namespace {
+
+ConditionVerdict decide3(const std::string& homotopy, const std::string& notion, const std::string& text) {
+  const AtlasCell& cell = decide_cell(3, homotopy, notion);
+  return decide_condition(cell, affinterp::logic::parse_condition(text, cell.variables, cell.macros), {.seconds = 25});
+}
+
+}  // namespace
+
+TEST(Decide3, PolarNormSemidefiniteIsEquivalentAndOneSidedIsNot) {
+  EXPECT_EQ(decide3("polar", "norm", "(l1 >= 1 and l2 >= 1 and l3 >= 1) or (l1 <= 1 and l2 <= 1 and l3 <= 1)").verdict,
+            ConditionVerdict::Verdict::equivalent);
+  const ConditionVerdict wrong = decide3("polar", "norm", "l1 >= 1 and l2 >= 1");
+  ASSERT_EQ(wrong.verdict, ConditionVerdict::Verdict::not_equivalent) << wrong.reason;
+  EXPECT_TRUE(wrong.counterexample->checked_by_suite);
+}
+
+TEST(Decide3, TheTwoDimensionalEndpointTestIsNotTheLinearVolume) {
+  // In 2D p′ is affine and its signs at t = 0 and 1 decide (Lemma L2); in 3D p′ is quadratic and can dip between
+  // two positive ends, e.g. (c1, c2, c3) = (1, −3, 2): p′ = 1 − 6t + 6t² < 0 at t = 1/2.
+  const ConditionVerdict v = decide3("linear", "volume", "c1*(c1 + 2*c2 + 3*c3) >= 0");
+  ASSERT_EQ(v.verdict, ConditionVerdict::Verdict::not_equivalent) << v.reason;
+  EXPECT_TRUE(v.counterexample->condition);
+  EXPECT_FALSE(v.counterexample->property);
+  EXPECT_TRUE(v.counterexample->checked_by_suite);
+}
+
+TEST(Decide3, BadCellsAreRefusedWithAReason) {
+  EXPECT_THROW(decide_cell(3, "svd", "norm"), std::invalid_argument);
+  EXPECT_THROW(decide_cell(3, "polar", "area"), std::invalid_argument);
+  EXPECT_THROW(decide_cell(2, "polar", "volume"), std::invalid_argument);
+  EXPECT_THROW(decide_cell(4, "polar", "norm"), std::invalid_argument);
+}
+
 }  // namespace decide_test

@@ -245,6 +245,9 @@ def test_pair_refuses_malformed_outlines():
 def test_decide_refuses_a_bad_condition_without_running_a_decider():
     one_line_value_error(lambda: affinterp.decide("x +* y", "polar", "norm"), "bad condition")
     one_line_value_error(lambda: affinterp.decide("x > 1", "cubic", "norm"), "cubic")
+    one_line_value_error(lambda: affinterp.decide("l1 > 1", "svd", "norm", dim=3), "open")
+    one_line_value_error(lambda: affinterp.decide("l1 > 1", "polar", "area", dim=3), "volume")
+    one_line_value_error(lambda: affinterp.decide("x > 1", "polar", "norm", dim=4), "2 or 3")
 
 
 def test_readme_example_runs_as_written(tmp_path):

@@ -1,7 +1,9 @@
 #include "experiments/proofs/decide_condition.hpp"
 
+#include "experiments/proofs/atlas3.hpp"
 #include "experiments/proofs/witness.hpp"
 
+#include <map>
 #include <stdexcept>
 
 namespace affinterp::proofs {
@@ -27,7 +29,7 @@ logic::Point Encoding::to_cell(const logic::Point& p) const {
 }
 
 Encoding encode(const AtlasCell& cell, const Formula& quantifier_free) {
-  if (cell.homotopy == Homotopy::linear && cell.notion == Notion::norm) {
+  if (cell.dimension == 2 && cell.homotopy == Homotopy::linear && cell.notion == Notion::norm) {
     const Polynomial s = Polynomial::variable("s"), k = Polynomial::variable("k");
     const Formula f = logic::substitute(logic::substitute(quantifier_free, "b", s - k), "c", s + k);
     const std::vector<std::string> order{"a", "d", "s", "k"};
@@ -36,13 +38,47 @@ Encoding encode(const AtlasCell& cell, const Formula& quantifier_free) {
   return {logic::exists(cell.variables, quantifier_free), cell.variables, {}, false};
 }
 
+/// The 3D cells' simple points: the identity map (M = 0, all eigenvalues 1) and eigenvalues at 1 one by one.
+std::vector<logic::Point> simple_points3(const AtlasCell& cell) {
+  if (cell.variables.front() == "c1") return {{{"c1", 0}, {"c2", 0}, {"c3", 0}}, {{"c3", 0}}, {{"c2", 0}, {"c3", 0}}};
+  if (cell.variables.front() == "l1") return {{{"l1", 1}, {"l2", 1}, {"l3", 1}}, {{"l3", 1}}, {{"l2", 1}, {"l3", 1}}};
+  logic::Point identity, off_diagonal_zero;
+  for (int i = 1; i <= 3; ++i)
+    for (int j = 1; j <= 3; ++j) {
+      const std::string name = "a" + std::to_string(i) + std::to_string(j);
+      identity[name] = i == j ? 1 : 0;
+      if (i != j) off_diagonal_zero[name] = 0;
+    }
+  return {identity, off_diagonal_zero};
+}
+
 /// Simple points tried first when shrinking: the identity map and its neighbours.
 std::vector<logic::Point> simple_points(const AtlasCell& cell) {
+  if (cell.dimension == 3) return simple_points3(cell);
   if (cell.homotopy == Homotopy::linear) return {{{"a", 1}, {"b", 0}, {"c", 0}, {"d", 1}}, {{"b", 0}, {"c", 0}}};
   return {{{"x", 1}, {"y", 1}, {"h", 0}, {"beta", 0}}, {{"h", 0}, {"beta", 0}}, {{"beta", 1}}};
 }
 
 }  // namespace
+
+const AtlasCell& decide_cell(int dimension, const std::string& homotopy, const std::string& notion) {
+  const std::map<std::string, Homotopy> homotopies = {
+      {"linear", Homotopy::linear}, {"svd", Homotopy::svd}, {"polar", Homotopy::polar}, {"exp-log", Homotopy::exp_log}};
+  if (!homotopies.contains(homotopy))
+    throw std::invalid_argument("homotopy '" + homotopy + "': expected linear, svd, polar or exp-log");
+  const Homotopy h = homotopies.at(homotopy);
+  if (dimension == 2) {
+    if (notion != "area" && notion != "norm")
+      throw std::invalid_argument("notion '" + notion + "': expected area or norm in 2D");
+    return atlas_cell(h, notion == "area" ? Notion::area : Notion::norm);
+  }
+  if (dimension != 3) throw std::invalid_argument("dimension " + std::to_string(dimension) + ": expected 2 or 3");
+  if (notion != "volume" && notion != "norm")
+    throw std::invalid_argument("notion '" + notion + "': expected volume or norm in 3D");
+  if (h == Homotopy::svd && notion == "norm")
+    throw std::invalid_argument("the 3D svd norm cell is open (reports/proofs/LEMMAS.md, L19): nothing to decide against");
+  return atlas3_cell(h, notion == "volume" ? Notion::volume : Notion::norm);
+}
 
 std::string_view to_string(ConditionVerdict::Verdict v) {
   switch (v) {

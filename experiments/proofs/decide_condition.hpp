@@ -27,6 +27,11 @@ struct ConditionVerdict {
   std::vector<SentenceDecision> sides;
 };
 
+/// The cell `affinterp decide` answers for: dimension 2 (notions "area", "norm", atlas.hpp) or 3 ("volume",
+/// "norm", atlas3.hpp); homotopy "linear", "svd", "polar" or "exp-log". Throws std::invalid_argument, with a
+/// one-line reason, for anything else (the 3D SVD norm is open: no cell).
+const AtlasCell& decide_cell(int dimension, const std::string& homotopy, const std::string& notion);
+
 /// "equivalent", "not-equivalent", "unknown".
 std::string_view to_string(ConditionVerdict::Verdict v);
 

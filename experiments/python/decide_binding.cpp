@@ -13,15 +13,16 @@ namespace affinterp::python {
 namespace {
 
 py::dict decide(const std::string& condition_text, const std::string& homotopy, const std::string& notion,
-                double timeout) {
+                double timeout, int dim) {
   using namespace affinterp::proofs;
-  const std::map<std::string, Homotopy> homotopies = {
-      {"linear", Homotopy::linear}, {"svd", Homotopy::svd}, {"polar", Homotopy::polar}, {"exp-log", Homotopy::exp_log}};
-  if (!homotopies.contains(homotopy))
-    value_error("homotopy '" + homotopy + "': expected linear, svd, polar or exp-log");
-  if (notion != "area" && notion != "norm") value_error("notion '" + notion + "': expected area or norm");
   if (!(timeout >= 1 && timeout <= 600)) value_error("timeout: expected seconds in [1, 600]");
-  const AtlasCell& cell = atlas_cell(homotopies.at(homotopy), notion == "area" ? Notion::area : Notion::norm);
+  const AtlasCell* found = nullptr;
+  try {
+    found = &decide_cell(dim, homotopy, notion);
+  } catch (const std::invalid_argument& e) {
+    value_error(e.what());
+  }
+  const AtlasCell& cell = *found;
   logic::Formula condition;
   try {
     condition = logic::parse_condition(condition_text, cell.variables, cell.macros);
@@ -51,11 +52,14 @@ py::dict decide(const std::string& condition_text, const std::string& homotopy, 
 
 void bind_decide(py::module_& m) {
   m.def("decide", &decide, py::arg("condition"), py::arg("homotopy"), py::arg("notion"), py::kw_only(),
-        py::arg("timeout") = 25.0,
+        py::arg("timeout") = 25.0, py::arg("dim") = 2,
         R"(Whether `condition` holds exactly where `homotopy` ('linear', 'svd', 'polar', 'exp-log') is good for
 `notion` ('area': thesis Def 2.2.1, 'norm': Def 2.2.2), decided for all reals by QEPCAD B and Z3 (both must
 be installed), as `affinterp decide --json`. Variables: linear a, b, c, d (A = [[a, b], [c, d]]); polar and
 exp-log x, y, h (S = [[x, h], [h, y]]); svd x, y (and beta for the norm); tr and det everywhere.
+With dim=3 (3x3 maps, notions 'volume' and 'norm'): linear volume c1, c2, c3 (the invariants of A - I);
+linear norm a11 ... a33; polar, svd (volume) and exp-log l1, l2, l3 (the singular values of A), as
+`affinterp decide --dim 3 --help` lists them.
 Returns {'verdict': 'equivalent' | 'not-equivalent' | 'unknown', 'counterexample': None or
 {variable: 'p/q', 'condition': bool, 'property': bool}, and 'reason' when unknown}. ValueError on a bad
 condition (the CLI's message).)");

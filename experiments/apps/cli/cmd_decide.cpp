@@ -20,6 +20,7 @@ using namespace affinterp::proofs;
 
 struct DecideOptions {
   std::string homotopy, notion, condition;
+  int dim = 2;
   bool json = false;
   double timeout = 25;
 };
@@ -30,12 +31,22 @@ constexpr const char* footer = R"(Variables (with tr and det of the matrix named
   exp-log   x, y, h           the rotation R plays no part in either notion
   svd       x, y (, beta)   D = diag(x, y), x, y > 0, A = R_alpha D R_beta; for the norm also beta, the right
                             rotation's angle in radians (any real; A(t) = R_(t alpha)((1-t)I + tD)R_(t beta))
+Variables with --dim 3 (notions volume and norm; reports/proofs/LEMMAS.md, "The 3D atlas"):
+  linear volume   c1, c2, c3    tr M, the sum of M's principal 2x2 minors, det M for M = A - I;
+                                det A = 1 + c1 + c2 + c3 > 0; det((1-t)I + tA) = 1 + c1 t + c2 t^2 + c3 t^3
+  linear norm     a11 ... a33   the entries of A (row, column), det A > 0; macros p11 ... p33, q11 ... q33
+                                (P = sym(A) - I, Q = A^T A - sym(A)), det, detP, detQ
+  polar, svd      l1, l2, l3    the eigenvalues of S in A = R S, i.e. the singular values of A, all > 0;
+  (volume),                     macros c1, c2, c3: the invariants of S - I. The rotations play no part;
+  polar, exp-log                the 3D svd norm cell is open (no decide)
+  (volume, norm)
 Grammar:
   numbers 3, 0.25, .5, 1/3; + - * /; ^ with integer exponents (x^2, x^-1); parentheses;
   comparisons < <= > >= = != (== too; chains 0 < x <= 1); and or not (also && || !); true false.
   A comparison whose sides divide by a polynomial D is false where D = 0 (N/D op 0 is D != 0 and N*D op 0).
 Output: "equivalent", or "not equivalent" with a counterexample in small exact rationals (re-verified by exact
-evaluation, and by the suite's own exact decider for linear, polar and svd-area cells) and which side fails,
+evaluation, and by the suite's own exact decider for linear, polar and svd-area cells; in 3D by
+theory/local/goodness3.hpp for all but exp-log volume, where it answers) and which side fails,
 or "unknown" with the reason. Each decider gets at most --timeout seconds per side.
 Exit status: 0 with a verdict (unknown included), 2 on a bad expression or usage.)";
 
@@ -50,11 +61,15 @@ void print_text(const AtlasCell& cell, const ConditionVerdict& v) {
     std::cout << "  counterexample:";
     for (const std::string& name : cell.variables)
       std::cout << " " << name << " = " << exact::to_string(c.point.at(name));
-    std::cout << "\n  the condition is " << (c.condition ? "true" : "false") << " there, but the " << cell.id()
+    std::cout << "\n  the condition is " << (c.condition ? "true" : "false") << " there, but the "
+              << (cell.dimension == 3 ? "3D " : "") << cell.id()
               << " homotopy is " << (c.property ? "good" : "not good") << " ("
               << (c.condition ? "condition-true-property-false" : "condition-false-property-true") << ")\n";
     std::cout << "  re-verified by exact evaluation"
-              << (c.checked_by_suite ? " and by the suite's exact decider (theory/local/goodness.hpp)" : "") << "\n";
+              << (c.checked_by_suite ? std::string(" and by the suite's exact decider (theory/local/") +
+                                           (cell.dimension == 3 ? "goodness3.hpp)" : "goodness.hpp)")
+                                     : std::string())
+              << "\n";
   }
   if (!v.reason.empty()) std::cout << "  " << (v.verdict == V::unknown ? "reason: " : "note: ") << v.reason << "\n";
   for (const SentenceDecision& side : v.sides) {
@@ -81,11 +96,13 @@ void print_json(const AtlasCell& cell, const ConditionVerdict& v, double seconds
 
 void run(const DecideOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  const Homotopy homotopy = options.homotopy == "linear"  ? Homotopy::linear
-                            : options.homotopy == "svd"   ? Homotopy::svd
-                            : options.homotopy == "polar" ? Homotopy::polar
-                                                          : Homotopy::exp_log;
-  const AtlasCell& cell = atlas_cell(homotopy, options.notion == "area" ? Notion::area : Notion::norm);
+  const AtlasCell* found = nullptr;
+  try {
+    found = &decide_cell(options.dim, options.homotopy, options.notion);
+  } catch (const std::invalid_argument& e) {
+    throw CommandFailed(e.what(), usage_error);
+  }
+  const AtlasCell& cell = *found;
   logic::Formula condition;
   try {
     condition = logic::parse_condition(options.condition, cell.variables, cell.macros);
@@ -107,11 +124,17 @@ void add_decide_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "decide",
       "Decide for all reals whether a condition is exactly where a homotopy is good for area (Def 2.2.1) or norm "
-      "(Def 2.2.2), with QEPCAD B and Z3 (both must be installed; answers within about a minute).");
+      "(Def 2.2.2) of 2x2 maps, or for volume or norm of 3x3 maps (--dim 3), with QEPCAD B and Z3 (both must be "
+      "installed; answers within about a minute).");
+  cmd->add_option("--dim", options->dim, "2 (2x2 maps, the default) or 3 (3x3 maps)")
+      ->check(CLI::IsMember({2, 3}))
+      ->capture_default_str();
   cmd->add_option("--homotopy", options->homotopy, "linear, svd, polar or exp-log")
       ->required()
       ->check(CLI::IsMember({"linear", "svd", "polar", "exp-log"}));
-  cmd->add_option("--notion", options->notion, "area or norm")->required()->check(CLI::IsMember({"area", "norm"}));
+  cmd->add_option("--notion", options->notion, "area or norm (2D); volume or norm (3D)")
+      ->required()
+      ->check(CLI::IsMember({"area", "norm", "volume"}));
   cmd->add_option("--condition", options->condition, "The condition, in the grammar below")->required();
   cmd->add_flag("--json", options->json,
                 "Print one JSON object {\"verdict\", \"counterexample\": {variables as \"p/q\" (\"p\" when q = 1), "
