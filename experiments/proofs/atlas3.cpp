@@ -23,8 +23,7 @@ constexpr const char* volume_condition =
 constexpr const char* volume_words =
     "c1 + 2c2 t + 3c3 t² keeps one sign on [0, 1]: c1 and c1 + 2c2 + 3c3 of one sign (≥ 0 or ≤ 0), and where "
     "the vertex −c2/(3c3) lies in (0, 1) with the parabola opening away from that sign, c2² ≤ 3c1c3";
-constexpr const char* semidefinite_condition =
-    "(l1 >= 1 and l2 >= 1 and l3 >= 1) or (l1 <= 1 and l2 <= 1 and l3 <= 1)";
+constexpr const char* semidefinite_condition = "(l1 >= 1 and l2 >= 1 and l3 >= 1) or (l1 <= 1 and l2 <= 1 and l3 <= 1)";
 constexpr const char* semidefinite_words = "S − I semidefinite: all three eigenvalues of S on the same side of 1";
 
 /// c1, c2, c3: the elementary symmetric functions of l1 − 1, l2 − 1, l3 − 1 (the invariants of S − I).
@@ -77,14 +76,21 @@ std::vector<AtlasCell> make_cells3() {
     for (int j = 0; j < 3; ++j) entries.push_back("a" + std::to_string(i + 1) + std::to_string(j + 1));
   const std::map<std::string, Polynomial> none, eig = eigenvalue_macros(), lin = linear_norm_macros();
   const logic::Formula det_positive = logic::greater(Polynomial(1) + c1 + c2 + c3, 0);
-  const logic::Formula positive = logic::greater(symbol3("l1"), 0) && logic::greater(symbol3("l2"), 0) &&
-                                  logic::greater(symbol3("l3"), 0);
+  const logic::Formula positive =
+      logic::greater(symbol3("l1"), 0) && logic::greater(symbol3("l2"), 0) && logic::greater(symbol3("l3"), 0);
   const std::string in_c = "c1, c2, c3 the invariants of M = A − I, with det A = 1 + c1 + c2 + c3 > 0";
   const std::string in_s = "l1, l2, l3 > 0 the eigenvalues of S (the singular values of A)";
   const auto cell = [](Homotopy h, Notion n, std::vector<std::string> vars, std::map<std::string, Polynomial> macros,
                        logic::Formula domain, std::string domain_words, std::string condition, std::string words) {
-    return AtlasCell{h,     n, std::move(vars), std::move(macros), std::move(domain), std::move(domain_words),
-                     std::move(condition), std::move(words), 3};
+    return AtlasCell{h,
+                     n,
+                     std::move(vars),
+                     std::move(macros),
+                     std::move(domain),
+                     std::move(domain_words),
+                     std::move(condition),
+                     std::move(words),
+                     3};
   };
   return {
       cell(Homotopy::linear, Notion::volume, invariants, none, det_positive, in_c, volume_condition, volume_words),
@@ -93,8 +99,7 @@ std::vector<AtlasCell> make_cells3() {
            "sym(A) ⪰ I or AᵀA ⪯ sym(A) (Loewner order), as in 2D"),
       cell(Homotopy::svd, Notion::volume, eigenvalues, eig, positive, in_s, volume_condition, volume_words),
       cell(Homotopy::polar, Notion::volume, eigenvalues, eig, positive, in_s, volume_condition, volume_words),
-      cell(Homotopy::polar, Notion::norm, eigenvalues, eig, positive, in_s, semidefinite_condition,
-           semidefinite_words),
+      cell(Homotopy::polar, Notion::norm, eigenvalues, eig, positive, in_s, semidefinite_condition, semidefinite_words),
       cell(Homotopy::exp_log, Notion::volume, eigenvalues, eig, positive, in_s, "true",
            "always: det A(t) = (l1 l2 l3)^t"),
       cell(Homotopy::exp_log, Notion::norm, eigenvalues, eig, positive, in_s, semidefinite_condition,
@@ -127,7 +132,8 @@ std::optional<bool> suite_says_good3(const AtlasCell& cell, const logic::Point& 
   const auto at = [&](const std::string& name) { return p.at(name); };
   switch (cell.homotopy) {
     case Homotopy::linear:
-      if (cell.notion == Notion::volume) return local::good_for_volume<Rat>(companion_map(at("c1"), at("c2"), at("c3")));
+      if (cell.notion == Notion::volume)
+        return local::good_for_volume<Rat>(companion_map(at("c1"), at("c2"), at("c3")));
       {
         local::Mat3<Rat> A;
         for (int i = 0; i < 3; ++i)
@@ -136,7 +142,8 @@ std::optional<bool> suite_says_good3(const AtlasCell& cell, const logic::Point& 
       }
     case Homotopy::svd:
     case Homotopy::polar:
-      if (cell.notion == Notion::volume) return local::good_for_volume<Rat>(local::diagonal3(at("l1"), at("l2"), at("l3")));
+      if (cell.notion == Notion::volume)
+        return local::good_for_volume<Rat>(local::diagonal3(at("l1"), at("l2"), at("l3")));
       return local::good_for_norm_polar<Rat>(at("l1"), at("l2"), at("l3"));
     case Homotopy::exp_log:
       if (cell.notion == Notion::volume) return std::nullopt;

@@ -76,7 +76,8 @@ const AtlasCell& decide_cell(int dimension, const std::string& homotopy, const s
   if (notion != "volume" && notion != "norm")
     throw std::invalid_argument("notion '" + notion + "': expected volume or norm in 3D");
   if (h == Homotopy::svd && notion == "norm")
-    throw std::invalid_argument("the 3D svd norm cell is open (reports/proofs/LEMMAS.md, L19): nothing to decide against");
+    throw std::invalid_argument(
+        "the 3D svd norm cell is open (reports/proofs/LEMMAS.md, L19): nothing to decide against");
   return atlas3_cell(h, notion == "volume" ? Notion::volume : Notion::norm);
 }
 

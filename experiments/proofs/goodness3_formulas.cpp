@@ -31,7 +31,8 @@ Formula polar_norm_property(const Eigenvalues& l) {
   return logic::forall({"v1", "v2", "v3"}, monotone_endpoints(q, "t"));
 }
 
-Formula cone_property(const std::array<Polynomial, 3>& sign_at_0, const std::array<std::array<Polynomial, 3>, 3>& cross) {
+Formula cone_property(const std::array<Polynomial, 3>& sign_at_0,
+                      const std::array<std::array<Polynomial, 3>, 3>& cross) {
   Formula none = logic::truth(true);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)

@@ -197,7 +197,8 @@ bool good_for_norm_polar(const F& l1, const F& l2, const F& l3) {
   AxisSlopes s;
   for (int i = 0; i < 3; ++i) {
     s.sign[i] = sign_of<F>(forms.P(i, i));
-    for (int j = 0; j < 3; ++j) s.cross[i][j] = sign_of<F>(forms.P(i, i) * forms.Q(j, j) - forms.P(j, j) * forms.Q(i, i));
+    for (int j = 0; j < 3; ++j)
+      s.cross[i][j] = sign_of<F>(forms.P(i, i) * forms.Q(j, j) - forms.P(j, j) * forms.Q(i, i));
   }
   return !some_direction_dips(s);
 }

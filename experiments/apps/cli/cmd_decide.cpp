@@ -62,8 +62,8 @@ void print_text(const AtlasCell& cell, const ConditionVerdict& v) {
     for (const std::string& name : cell.variables)
       std::cout << " " << name << " = " << exact::to_string(c.point.at(name));
     std::cout << "\n  the condition is " << (c.condition ? "true" : "false") << " there, but the "
-              << (cell.dimension == 3 ? "3D " : "") << cell.id()
-              << " homotopy is " << (c.property ? "good" : "not good") << " ("
+              << (cell.dimension == 3 ? "3D " : "") << cell.id() << " homotopy is "
+              << (c.property ? "good" : "not good") << " ("
               << (c.condition ? "condition-true-property-false" : "condition-false-property-true") << ")\n";
     std::cout << "  re-verified by exact evaluation"
               << (c.checked_by_suite ? std::string(" and by the suite's exact decider (theory/local/") +

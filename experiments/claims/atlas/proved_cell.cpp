@@ -82,11 +82,10 @@ std::vector<std::string> draw_slices(const ClaimContext& ctx, const proofs::Atla
     const std::string title = (cell.dimension == 3 ? "atlas3 " : "atlas ") + cell.id() + ", slice " + s.label;
     const double half = static_cast<double>(step) / 2;
     if (compared)
-      plots::draw_region_map(ctx.figure_stem(name),
-                             title + ": condition vs the exact decider of " +
-                                 (cell.dimension == 3 ? "goodness3.hpp" : "goodness.hpp"),
-                             s.x,
-                             s.y, points, half, half);
+      plots::draw_region_map(
+          ctx.figure_stem(name),
+          title + ": condition vs the exact decider of " + (cell.dimension == 3 ? "goodness3.hpp" : "goodness.hpp"),
+          s.x, s.y, points, half, half);
     else
       plots::draw_region(ctx.figure_stem(name), title + ": where the condition holds", s.x, s.y,
                          "good (the condition holds)", points, half, half);

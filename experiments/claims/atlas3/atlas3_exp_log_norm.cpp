@@ -34,10 +34,11 @@ atlas::AtlasProof proof() {
   const proofs::Eigenvalues l{Polynomial::variable("l1"), Polynomial::variable("l2"), Polynomial::variable("l3")};
   return atlas::AtlasProof{
       .scope = cell.domain_words,
-      .method = "Lemma L17 (exp-log in 3D): ||S^t v||^2 = sum l_i^(2t) w_i in S's eigenbasis; its half-derivative "
-                "is non-decreasing, so it dips iff it changes sign from t = 0 to 1, iff (Lemma L15) two axes have "
-                "slopes log l_i > 0 > log l_j with log l_i log l_j (l_j^2 - l_i^2) > 0; each sign is the sign of a "
-                "polynomial in l (level C)",
+      .method =
+          "Lemma L17 (exp-log in 3D): ||S^t v||^2 = sum l_i^(2t) w_i in S's eigenbasis; its half-derivative "
+          "is non-decreasing, so it dips iff it changes sign from t = 0 to 1, iff (Lemma L15) two axes have "
+          "slopes log l_i > 0 > log l_j with log l_i log l_j (l_j^2 - l_i^2) > 0; each sign is the sign of a "
+          "polynomial in l (level C)",
       .sentences = atlas::condition_sentences(cell, "C", proofs::exp_log_norm_property(l)),
       .cites = std::string(proofs::citations::exponential),
       .attempts = {{.formulation = "3D Def 2.2.2 as written for R^t S^t",

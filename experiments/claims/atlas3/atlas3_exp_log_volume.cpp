@@ -32,9 +32,10 @@ atlas::AtlasProof proof() {
   const Polynomial det = Polynomial::variable("l1") * Polynomial::variable("l2") * Polynomial::variable("l3");
   return atlas::AtlasProof{
       .scope = cell.domain_words,
-      .method = "Lemma L17 (exp-log in 3D): det A(t) = (l1 l2 l3)^t = exp(t log det S), positive with a derivative "
-                "of one sign, so good for volume iff det S > 0; the residue sentence (l1 l2 l3 <= 0 on the domain) "
-                "is empty, and condition-false-property-true is empty because the condition is true",
+      .method =
+          "Lemma L17 (exp-log in 3D): det A(t) = (l1 l2 l3)^t = exp(t log det S), positive with a derivative "
+          "of one sign, so good for volume iff det S > 0; the residue sentence (l1 l2 l3 <= 0 on the domain) "
+          "is empty, and condition-false-property-true is empty because the condition is true",
       .sentences = {atlas::atlas_sentence(cell, "cond-not-prop.residue",
                                           "eigenvalues l1, l2, l3 > 0 with l1 l2 l3 <= 0 (where L17's reduced "
                                           "property fails)",

@@ -34,9 +34,9 @@ proofs::Sentence along_v(const std::string& name, const std::string& meaning, co
                          const logic::Formula& conclusion_fails) {
   using logic::Polynomial;
   const Polynomial nu = Polynomial::variable("nu"), p = Polynomial::variable("p"), d = Polynomial::variable("d");
-  return proofs::sentence(name, meaning, {"nu", "p", "d"},
-                          nu_range && logic::greater_equal(d, 0) && logic::greater_equal(p - nu * (p + d), 0) &&
-                              conclusion_fails);
+  return proofs::sentence(
+      name, meaning, {"nu", "p", "d"},
+      nu_range && logic::greater_equal(d, 0) && logic::greater_equal(p - nu * (p + d), 0) && conclusion_fails);
 }
 
 atlas::AtlasProof proof() {
@@ -45,17 +45,17 @@ atlas::AtlasProof proof() {
   const Polynomial nu = Polynomial::variable("nu"), p = Polynomial::variable("p"), d = Polynomial::variable("d");
   return atlas::AtlasProof{
       .scope = cell.domain_words,
-      .method = "Lemma L18: no v has P(v) < 0 < Q(v) (L3) iff Q <= 0 or P - nu Q >= 0 for some nu >= 0 (Dines on "
-                "R^3); along each v, with p = P(v) and d = ||Mv||^2 >= 0, p - nu(p + d) >= 0 gives p >= 0 "
-                "(nu < 1), p + d <= 0 (nu > 1) or d = 0 (nu = 1): so P >= 0 or Q <= 0 or M = 0; the converse is "
-                "immediate (P >= 0: every derivative starts >= 0; Q <= 0: every derivative ends <= 0)",
-      .sentences =
-          {along_v("L18.nu-below-one", "0 <= nu < 1 and p - nu(p + d) >= 0, d >= 0, with p < 0",
-                   logic::greater_equal(nu, 0) && logic::less(nu, 1), logic::less(p, 0)),
-           along_v("L18.nu-above-one", "nu > 1 and p - nu(p + d) >= 0, d >= 0, with p + d > 0",
-                   logic::greater(nu, 1), logic::greater(p + d, 0)),
-           along_v("L18.nu-one", "nu = 1 and p - nu(p + d) >= 0, d >= 0, with d > 0", logic::equal(nu, 1),
-                   logic::greater(d, 0))},
+      .method =
+          "Lemma L18: no v has P(v) < 0 < Q(v) (L3) iff Q <= 0 or P - nu Q >= 0 for some nu >= 0 (Dines on "
+          "R^3); along each v, with p = P(v) and d = ||Mv||^2 >= 0, p - nu(p + d) >= 0 gives p >= 0 "
+          "(nu < 1), p + d <= 0 (nu > 1) or d = 0 (nu = 1): so P >= 0 or Q <= 0 or M = 0; the converse is "
+          "immediate (P >= 0: every derivative starts >= 0; Q <= 0: every derivative ends <= 0)",
+      .sentences = {along_v("L18.nu-below-one", "0 <= nu < 1 and p - nu(p + d) >= 0, d >= 0, with p < 0",
+                            logic::greater_equal(nu, 0) && logic::less(nu, 1), logic::less(p, 0)),
+                    along_v("L18.nu-above-one", "nu > 1 and p - nu(p + d) >= 0, d >= 0, with p + d > 0",
+                            logic::greater(nu, 1), logic::greater(p + d, 0)),
+                    along_v("L18.nu-one", "nu = 1 and p - nu(p + d) >= 0, d >= 0, with d > 0", logic::equal(nu, 1),
+                            logic::greater(d, 0))},
       .cites = std::string(proofs::citations::dines_and_principal_minors),
   };
 }

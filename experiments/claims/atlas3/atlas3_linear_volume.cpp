@@ -34,9 +34,10 @@ atlas::AtlasProof proof() {
                                                  Polynomial::variable("c3"), Polynomial::variable("t"));
   return atlas::AtlasProof{
       .scope = cell.domain_words,
-      .method = "3D Def 2.2.1 for det(I + tM) = 1 + c1 t + c2 t^2 + c3 t^3 (Lemma L16; every real triple is "
-                "realised by a companion matrix) at level D: positive on [0, 1] and the derivative of one sign "
-                "there (Lemma L1)",
+      .method =
+          "3D Def 2.2.1 for det(I + tM) = 1 + c1 t + c2 t^2 + c3 t^3 (Lemma L16; every real triple is "
+          "realised by a companion matrix) at level D: positive on [0, 1] and the derivative of one sign "
+          "there (Lemma L1)",
       .sentences = atlas::condition_sentences(cell, "D", proofs::volume_property(p)),
   };
 }

@@ -38,9 +38,10 @@ atlas::AtlasProof proof() {
   for (proofs::Sentence& s : level_E) s.qepcad_setup = proofs::hong_projection(s.formula);
   return atlas::AtlasProof{
       .scope = cell.domain_words,
-      .method = "3D Def 2.2.2 for ((1-t)I + tS)v (the rotation is orthogonal, Lemma L14) in S's eigenbasis "
-                "(Lemma L15) at level E: the squared norm's t-derivative is affine with slope >= 0 (L3), so it is "
-                "monotone for v unless its derivative is < 0 at t = 0 and > 0 at t = 1; for every v in R^3",
+      .method =
+          "3D Def 2.2.2 for ((1-t)I + tS)v (the rotation is orthogonal, Lemma L14) in S's eigenbasis "
+          "(Lemma L15) at level E: the squared norm's t-derivative is affine with slope >= 0 (L3), so it is "
+          "monotone for v unless its derivative is < 0 at t = 0 and > 0 at t = 1; for every v in R^3",
       .sentences = level_E,
       .formulations = {{.method = "level C: the cone of the per-axis slopes (mu_i, mu_i l_i), mu_i = l_i - 1, "
                                   "meets no open second quadrant (Lemma L15, Caratheodory in the plane)",
@@ -49,9 +50,9 @@ atlas::AtlasProof proof() {
 }
 
 Outcome check(const ClaimContext& ctx) {
-  return atlas::atlas_outcome(ctx, proofs::atlas3_cell(proofs::Homotopy::polar, proofs::Notion::norm), proof(),
-                              {{"l1", "l2", 0, 3, {{"l3", Rational(1, 2)}}, "l3 = 1/2"},
-                               {"l1", "l2", 0, 3, {{"l3", Rational(2)}}, "l3 = 2"}});
+  return atlas::atlas_outcome(
+      ctx, proofs::atlas3_cell(proofs::Homotopy::polar, proofs::Notion::norm), proof(),
+      {{"l1", "l2", 0, 3, {{"l3", Rational(1, 2)}}, "l3 = 1/2"}, {"l1", "l2", 0, 3, {{"l3", Rational(2)}}, "l3 = 2"}});
 }
 
 }  // namespace

@@ -15,9 +15,11 @@ const ClaimDeclaration claim{{
     .id = "atlas3.polar.volume",
     .chapter = Chapter::atlas3,
     .where = "beyond the papers (the 3D sequel Kaji et al. announce); 3D Def 2.2.1",
-    .statement = "The polar homotopy R^t((1−t)I + tS), A = RS, is good for volume exactly when c1 + 2c2 t + 3c3 t² keeps one sign on [0, 1], "
-                 "c1, c2, c3 the elementary symmetric functions of l1 − 1, l2 − 1, l3 − 1 (the eigenvalues l1, l2, l3 of S): "
-                 "the linear cell's condition for the invariants of S − I.",
+    .statement =
+        "The polar homotopy R^t((1−t)I + tS), A = RS, is good for volume exactly when c1 + 2c2 t + 3c3 t² keeps one "
+        "sign on [0, 1], "
+        "c1, c2, c3 the elementary symmetric functions of l1 − 1, l2 − 1, l3 − 1 (the eigenvalues l1, l2, l3 of S): "
+        "the linear cell's condition for the invariants of S − I.",
     .strength = Strength::sample,
     .check = check,
 }};
@@ -33,20 +35,21 @@ atlas::AtlasProof proof() {
   const proofs::Eigenvalues l{Polynomial::variable("l1"), Polynomial::variable("l2"), Polynomial::variable("l3")};
   return atlas::AtlasProof{
       .scope = cell.domain_words,
-      .method = "3D Def 2.2.1 for det((1-t)I + t diag(l1, l2, l3)) = prod(1 + t(l_i - 1)) (the rotations have "
-                "determinant 1, Lemma L14) at level D: positive on [0, 1] and the derivative of one sign there "
-                "(Lemma L1)",
-      .sentences = atlas::condition_sentences(cell, "D", proofs::volume_property(
-                                                             proofs::det_of_diagonal_blend(l, Polynomial::variable("t")))),
+      .method =
+          "3D Def 2.2.1 for det((1-t)I + t diag(l1, l2, l3)) = prod(1 + t(l_i - 1)) (the rotations have "
+          "determinant 1, Lemma L14) at level D: positive on [0, 1] and the derivative of one sign there "
+          "(Lemma L1)",
+      .sentences = atlas::condition_sentences(
+          cell, "D", proofs::volume_property(proofs::det_of_diagonal_blend(l, Polynomial::variable("t")))),
       .identities = {vieta_identity(cell)},
       .formulations = {through_linear_volume(cell)},
   };
 }
 
 Outcome check(const ClaimContext& ctx) {
-  return atlas::atlas_outcome(ctx, proofs::atlas3_cell(proofs::Homotopy::polar, proofs::Notion::volume), proof(),
-                              {{"l1", "l2", 0, 4, {{"l3", Rational(1, 4)}}, "l3 = 1/4"},
-                               {"l1", "l2", 0, 4, {{"l3", Rational(3)}}, "l3 = 3"}});
+  return atlas::atlas_outcome(
+      ctx, proofs::atlas3_cell(proofs::Homotopy::polar, proofs::Notion::volume), proof(),
+      {{"l1", "l2", 0, 4, {{"l3", Rational(1, 4)}}, "l3 = 1/4"}, {"l1", "l2", 0, 4, {{"l3", Rational(3)}}, "l3 = 3"}});
 }
 
 }  // namespace
