@@ -84,6 +84,12 @@ TEST(Atlas3, SevenCellsAndTheOpenOne) {
   // the companion map realises the invariants: (c1, c2, c3) = (3, 3, 1) is M = I, A = 2I, good
   EXPECT_EQ(suite_says_good3(atlas3_cell(Homotopy::linear, Notion::volume), {{"c1", 3}, {"c2", 3}, {"c3", 1}}),
             std::optional<bool>(true));
+  // the 2D reading (p′ at t = 0 and 1 only) fails in 3D: c = (1, −3, 2), p′ = 1 − 6t + 6t² is 1 at both ends and
+  // −1/2 at t = 1/2 (det A = 1)
+  const AtlasCell& linear = atlas3_cell(Homotopy::linear, Notion::volume);
+  const affinterp::logic::Point c{{"c1", 1}, {"c2", -3}, {"c3", 2}};
+  EXPECT_EQ(suite_says_good3(linear, c), std::optional<bool>(false));
+  EXPECT_FALSE(affinterp::logic::holds(linear.condition_formula(), c));
 }
 
 RC_GTEST_PROP(Atlas3, LinearVolumeAgreesWithTheDecider, ()) { check_cell(Homotopy::linear, Notion::volume); }
