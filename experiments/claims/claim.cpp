@@ -18,6 +18,8 @@ std::string_view to_string(Chapter chapter) {
       return "atlas";
     case Chapter::atlas3:
       return "atlas3";
+    case Chapter::global3:
+      return "global3";
   }
   return "?";
 }
@@ -35,6 +37,8 @@ std::string_view report_section(Chapter chapter) {
       return "The goodness atlas (beyond the papers: where each homotopy is good, proved for all reals)";
     case Chapter::atlas3:
       return "The 3D goodness atlas (beyond the papers: the sequel Kaji et al. announce, for 3×3 maps)";
+    case Chapter::global3:
+      return "3D interpolation and blending (beyond the papers: the sequel Kaji et al. announce, for 3D meshes)";
   }
   return "?";
 }

@@ -4,6 +4,7 @@
 //     Interpolation, Proc. SCA 2012 ("kaji.*").
 //   Matsushita: A Study on 2D Shape Interpolation Using Affine Maps, doctoral thesis, Kyushu
 //     University, 2015 ("thesis.*").
+// Beyond the papers: the goodness atlases ("atlas.*", "atlas3.*") and the 3D sequel Kaji et al. announce ("sequel.*").
 // The file is experiments/claims/<chapter>/<file_stem(id)>.cpp (kaji.polar.det → local/kaji_polar_det.cpp).
 // It opens with the declaration, a ClaimDeclaration at namespace scope, which adds the claim to
 // registered_claims() (registry.hpp) before main runs; under it, the reading, method and sizes, then the check.
@@ -17,7 +18,7 @@
 namespace affinterp::claims {
 
 /// The folders experiments/claims/<chapter>/, in the report's order.
-enum class Chapter { local, global, origin, sym3, atlas, atlas3 };
+enum class Chapter { local, global, origin, sym3, atlas, atlas3, global3 };
 
 /// The chapter's folder name.
 std::string_view to_string(Chapter chapter);

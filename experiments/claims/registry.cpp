@@ -45,7 +45,7 @@ bool run_order(const Claim& a, const Claim& b) {
 }
 
 void ClaimRegistry::add(Claim claim) {
-  static const std::regex form(R"((kaji|thesis|atlas|atlas3)\.[A-Za-z0-9.-]+)");
+  static const std::regex form(R"((kaji|thesis|atlas|atlas3|sequel)\.[A-Za-z0-9.-]+)");
   const std::string id(claim.id);
   if (!std::regex_match(id, form)) throw std::logic_error("malformed claim ID: '" + id + "'");
   if (find(claim.id) != nullptr) throw std::logic_error("claim declared twice: " + id);

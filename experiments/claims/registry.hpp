@@ -12,8 +12,8 @@ namespace affinterp::claims {
 
 class ClaimRegistry {
  public:
-  /// Adds a claim; throws std::logic_error for an ID not of the form kaji.*, thesis.* or atlas.* (letters, digits,
-  /// '.', '-'), an ID already added, or an empty `where` or `statement`.
+  /// Adds a claim; throws std::logic_error for an ID not of the form kaji.*, thesis.*, atlas.*, atlas3.* or sequel.*
+  /// (letters, digits, '.', '-'), an ID already added, or an empty `where` or `statement`.
   void add(Claim claim);
   /// The claims in run order (run_order).
   std::span<const Claim> claims() const { return claims_; }
