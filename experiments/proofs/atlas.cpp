@@ -88,6 +88,8 @@ std::string_view to_string(Notion n) {
       return "norm";
     case Notion::volume:
       return "volume";
+    case Notion::singular_values:
+      return "singular-values";
   }
   return "?";
 }

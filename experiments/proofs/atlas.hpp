@@ -20,10 +20,10 @@
 namespace affinterp::proofs {
 
 enum class Homotopy { linear, svd, polar, exp_log };
-enum class Notion { area, norm, volume };  ///< volume: the 3D cells (atlas3.hpp)
+enum class Notion { area, norm, volume, singular_values };  ///< volume, singular_values: 3D (atlas3.hpp)
 
 std::string_view to_string(Homotopy h);  ///< "linear", "svd", "polar", "exp-log"
-std::string_view to_string(Notion n);    ///< "area", "norm", "volume"
+std::string_view to_string(Notion n);    ///< "area", "norm", "volume", "singular-values"
 
 struct AtlasCell {
   Homotopy homotopy;

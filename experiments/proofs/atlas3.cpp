@@ -130,6 +130,7 @@ const AtlasCell& atlas3_cell(Homotopy h, Notion n) {
 
 std::optional<bool> suite_says_good3(const AtlasCell& cell, const logic::Point& p) {
   const auto at = [&](const std::string& name) { return p.at(name); };
+  if (cell.notion == Notion::singular_values) return std::nullopt;  // Lemma L25: nothing left to evaluate
   switch (cell.homotopy) {
     case Homotopy::linear:
       if (cell.notion == Notion::volume)

@@ -23,7 +23,8 @@ const std::vector<AtlasCell>& atlas3_cells();
 const AtlasCell& atlas3_cell(Homotopy h, Notion n);
 
 /// Whether the homotopy is good at `p` by theory/local/goodness3.hpp, or nullopt where it has no decider (exp-log
-/// volume: always good by Lemma L17, nothing to evaluate) or, for the linear norm, no certificate either way.
+/// volume and the singular-value cells: always good by Lemmas L17, L25, nothing to evaluate) or, for the linear
+/// norm, no certificate either way.
 std::optional<bool> suite_says_good3(const AtlasCell& cell, const logic::Point& p);
 
 }  // namespace affinterp::proofs
