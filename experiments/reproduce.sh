@@ -57,7 +57,9 @@ mkdir -p "$bench_dir"
 # a shared machine then fall between processes, which the bootstrap intervals cover
 # (experiments/bench/bootstrap.hpp), instead of tilting a verdict. Their processes are merged into one file each.
 processes=${AFFINTERP_BENCH_PROCESSES:-1}
-speed_programs=(bench_exp3 bench_app3 bench_interp)
+# bench_3d (the 3D engine's set-up, frames and blends; about half a minute) has no verdict of its own: the report's
+# 3D section and thesis.app.speedup's second table read its file.
+speed_programs=(bench_exp3 bench_app3 bench_interp bench_3d)
 staging="$bench_dir/.processes"
 rm -rf "$staging"
 mkdir -p "$staging"

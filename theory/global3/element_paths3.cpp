@@ -40,7 +40,8 @@ ElementPaths3::ElementPaths3(const std::vector<Matrix3d>& maps, LocalHomotopy ho
   if (homotopy == LocalHomotopy::linear) A_ = maps;
 }
 
-void ElementPaths3::maps_at(double t, std::span<Matrix3d> out, std::size_t threads) const {
+void ElementPaths3::maps_at(double t, std::span<Matrix3d> out, std::size_t threads,
+                            const sym3::SymExpBatch& exp) const {
   if (homotopy_ == LocalHomotopy::exp) {
     exp_log_maps(
         [&](Index first, Index last, std::span<Eigen::Vector3d> Omega, std::span<Matrix3d> Lambda) {
@@ -49,7 +50,7 @@ void ElementPaths3::maps_at(double t, std::span<Matrix3d> out, std::size_t threa
             Lambda[static_cast<std::size_t>(i - first)] = t * stretch_[static_cast<std::size_t>(i)];
           }
         },
-        out, threads);
+        out, threads, exp);
     return;
   }
   global::for_each_range(out.size(), threads, [&](std::size_t first, std::size_t last) {

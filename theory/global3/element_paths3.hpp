@@ -10,6 +10,7 @@
 // own field, which the SVD's sign and order choices can break between neighbours. Linear has no branch.
 #include "theory/global/options.hpp"
 #include "theory/global3/rotation_branches3.hpp"
+#include "theory/sym3/exp_batch.hpp"
 
 #include <Eigen/Core>
 
@@ -25,8 +26,9 @@ class ElementPaths3 {
   ElementPaths3(const std::vector<Eigen::Matrix3d>& maps, global::LocalHomotopy homotopy, global::RotationBranch branch,
                 const DualGraph3& graph);
 
-  /// out[i] = A_i(t) for every element, on up to `threads` threads; the same bits on any number.
-  void maps_at(double t, std::span<Eigen::Matrix3d> out, std::size_t threads) const;
+  /// out[i] = A_i(t) for every element, on up to `threads` threads; the same bits on any number. `exp`: the
+  /// exp-log homotopy's symmetric exponentials (empty: sym3::exp_batched).
+  void maps_at(double t, std::span<Eigen::Matrix3d> out, std::size_t threads, const sym3::SymExpBatch& exp = {}) const;
   /// ω_i (column i), the logarithm of R_i in use.
   const Eigen::Matrix3Xd& rotation_logs() const { return omega_; }
   Eigen::Index element_count() const { return omega_.cols(); }

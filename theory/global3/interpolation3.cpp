@@ -49,7 +49,7 @@ Eigen::Matrix3Xd Interpolation3::Engine::frame(double t, std::size_t threads_, F
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   std::vector<Eigen::Matrix3d> A(static_cast<std::size_t>(paths.element_count()));
-  paths.maps_at(t, A, threads_);
+  paths.maps_at(t, A, threads_, options.exp);
   const auto mapped = Clock::now();
   PoissonSystem3::Block b = system.right_hand_side(A, threads_);
   const auto assembled = Clock::now();
@@ -90,7 +90,7 @@ std::vector<Eigen::Matrix3Xd> Interpolation3::vertices_at(const std::vector<doub
 std::vector<Eigen::Matrix3d> Interpolation3::local_maps_at(double t) const {
   engine_->require_time(t);
   std::vector<Eigen::Matrix3d> A(static_cast<std::size_t>(engine_->paths.element_count()));
-  engine_->paths.maps_at(t, A, engine_->threads);
+  engine_->paths.maps_at(t, A, engine_->threads, engine_->options.exp);
   return A;
 }
 

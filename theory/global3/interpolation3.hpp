@@ -22,6 +22,7 @@
 #include "theory/global3/frame_timings.hpp"
 #include "theory/global3/mesh3.hpp"
 #include "theory/global3/poisson_system3.hpp"
+#include "theory/sym3/exp_batch.hpp"
 
 #include <Eigen/Core>
 
@@ -43,6 +44,10 @@ struct Interpolation3Options {
   std::optional<global::SparseBackEnd> back_end;  ///< none: chosen by the mesh's size
   /// Threads one frame's loops and solve may use; 0: chosen by the mesh's size (small meshes: one).
   std::size_t frame_threads = 0;
+  /// exp-log's symmetric exponentials S^t = exp(t log S), one batch per exp_chunk elements; empty:
+  /// sym3::exp_batched (the thesis's improved algorithm, SIMD-batched). Another algorithm of theory/sym3 here
+  /// prices it inside a real frame (the benchmarks); the frame is then that algorithm's, not bit for bit this one's.
+  sym3::SymExpBatch exp;
 };
 
 /// Set up once from (source, target, options); then each frame is one batched pass of local maps and one solve.

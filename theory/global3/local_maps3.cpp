@@ -9,7 +9,8 @@
 
 namespace affinterp::global3 {
 
-void exp_log_maps(const LogFill& fill, std::span<Eigen::Matrix3d> out, std::size_t threads) {
+void exp_log_maps(const LogFill& fill, std::span<Eigen::Matrix3d> out, std::size_t threads,
+                  const sym3::SymExpBatch& exp) {
   const auto m = static_cast<Eigen::Index>(out.size());
   const auto chunks = static_cast<std::size_t>((m + exp_chunk - 1) / exp_chunk);
   global::for_each_range(chunks, std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(chunks, 1)),
@@ -21,7 +22,10 @@ void exp_log_maps(const LogFill& fill, std::span<Eigen::Matrix3d> out, std::size
                              const Eigen::Index last = std::min(m, first + exp_chunk);
                              const auto size = static_cast<std::size_t>(last - first);
                              fill(first, last, std::span(Omega).first(size), std::span(Lambda).first(size));
-                             sym3::exp_batched(std::span(Lambda).first(size), std::span(stretch).first(size));
+                             if (exp)
+                               exp(std::span(Lambda).first(size), std::span(stretch).first(size));
+                             else
+                               sym3::exp_batched(std::span(Lambda).first(size), std::span(stretch).first(size));
                              for (std::size_t j = 0; j < size; ++j)
                                out[static_cast<std::size_t>(first) + j] =
                                    local3::rotation_exp<double>(Omega[j]) * stretch[j];

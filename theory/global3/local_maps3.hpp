@@ -4,6 +4,8 @@
 // blend exp(Σ_k w_k [ω_{k,i}]×) exp(Σ_k w_k log S_{k,i}) (the Lie-algebra parametrisation of the thesis's
 // reference [6], Kaji et al.) alike. The symmetric exponentials go through sym3::exp_batched (the thesis's
 // chapter 3 exponential, SIMD-batched), the rotations through Rodrigues' formula (local3/rotation3.hpp).
+#include "theory/sym3/exp_batch.hpp"
+
 #include <Eigen/Core>
 
 #include <cstddef>
@@ -22,6 +24,9 @@ using LogFill = std::function<void(Eigen::Index first, Eigen::Index last, std::s
 
 /// out[i] = exp([Ω_i]×) exp(Λ_i) for i < out.size(), the elements taken exp_chunk at a time, the chunks
 /// shared among up to `threads` threads (1: the caller's alone). The same bits on any number of threads.
-void exp_log_maps(const LogFill& fill, std::span<Eigen::Matrix3d> out, std::size_t threads);
+/// `exp` computes the symmetric exponentials (empty: sym3::exp_batched), so that benchmarks can price another
+/// algorithm of thesis ch. 3 inside a real frame.
+void exp_log_maps(const LogFill& fill, std::span<Eigen::Matrix3d> out, std::size_t threads,
+                  const sym3::SymExpBatch& exp = {});
 
 }  // namespace affinterp::global3
