@@ -4,9 +4,11 @@
 // names of theory/global/options.hpp; the engine decides their defaults and rules.
 #include "experiments/apps/cli/command.hpp"
 #include "experiments/apps/cli/enum_option.hpp"
+#include "experiments/apps/cli/interpolate3.hpp"
 #include "experiments/inputs/constraint_spec.hpp"
 #include "experiments/inputs/frames_npy.hpp"
 #include "experiments/inputs/interpolation_request.hpp"
+#include "experiments/inputs/mesh3_file.hpp"
 #include "experiments/inputs/mesh_file.hpp"
 #include "experiments/inputs/mesh_pair.hpp"
 #include "experiments/support/progress.hpp"
@@ -341,6 +343,18 @@ void run(const InterpolateOptions& o) {
   std::cerr << "\n";
 }
 
+/// 3D meshes (a .mesh file, or some z != 0) go to the 3D engine (interpolate3.cpp) under the same options.
+void run_any(const InterpolateOptions& o, const CLI::App& cmd) {
+  if (!io::is_3d_mesh_file(o.source) && !io::is_3d_mesh_file(o.target)) return run(o);
+  refuse_planar_only_options(cmd, o.request);
+  Interpolate3Run run3;
+  run3.source = o.source, run3.target = o.target, run3.out = o.out, run3.request = o.request;
+  run3.times = frame_times(o, run3.request.options);
+  run3.times_given = o.times.has_value();
+  run3.format = o.format, run3.metrics = o.metrics;
+  run_interpolate3(run3);
+}
+
 constexpr const char* description =
     "Interpolate between two compatible 2D triangle meshes (Kaji et al. 2012, §3-4): writes OUT/frame_0000.obj ... "
     "(or OUT/frames.npy with --format npy), OUT/filmstrip.png/.svg, OUT/animation.gif, OUT/viewer.html "
@@ -349,7 +363,10 @@ constexpr const char* description =
     "(the order of the v lines). Meshes: triangles only (polygons refused), z = 0; when every source triangle runs "
     "clockwise all are reversed for the computation (frames keep the files' face list); mixed orientations, "
     "zero-area source triangles and flipped target triangles (unless allowed) are refused. On any error OUT keeps "
-    "its earlier content.";
+    "its earlier content. 3D meshes (some z != 0; surfaces as .obj/.off/.ply/.stl, tetrahedra as MEDIT .mesh) "
+    "run the 3D engine with E^F: frames as OBJ (surfaces) or .mesh (tetrahedra) or frames.npy (frames, n, 3), "
+    "metrics.json per frame: t, energy, volume or area ratios, distortion, inverted elements; 2D-only options "
+    "are refused.";
 
 /// The options the engine takes (global::InterpolationOptions), under its names, defaults and choices.
 void add_engine_options(CLI::App& cmd, InterpolateOptions& o) {
@@ -423,13 +440,15 @@ void add_output_options(CLI::App& cmd, InterpolateOptions& o) {
 void add_interpolate_command(CLI::App& app) {
   auto o = std::make_shared<InterpolateOptions>();
   CLI::App* cmd = app.add_subcommand("interpolate", description);
-  cmd->add_option("--source", o->source, "Source mesh (.obj, .off, .ply, .stl or .ts; z must be 0)")->required();
+  cmd->add_option("--source", o->source,
+                  "Source mesh (2D: .obj, .off, .ply, .stl or .ts with z = 0; 3D: .obj, .off, .ply, .stl or .mesh)")
+      ->required();
   cmd->add_option("--target", o->target, "Target mesh with the same triangles")->required();
   cmd->add_option("--out", o->out, "Output folder")->required();
   add_engine_options(*cmd, *o);
   add_constraint_options(*cmd, o->request);
   add_output_options(*cmd, *o);
-  cmd->callback([o] { run(*o); });
+  cmd->callback([o, cmd] { run_any(*o, *cmd); });
 }
 
 }  // namespace affinterp::cli

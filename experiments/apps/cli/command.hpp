@@ -27,5 +27,6 @@ void add_decide_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 void add_prove_command(CLI::App& app);
 void add_pair_command(CLI::App& app);
+void add_blend_command(CLI::App& app);
 
 }  // namespace affinterp::cli

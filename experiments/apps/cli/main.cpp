@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   add_bench_command(app);
   add_prove_command(app);
   add_pair_command(app);
+  add_blend_command(app);
 
   try {
     app.parse(argc, argv);

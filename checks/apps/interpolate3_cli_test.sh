@@ -1,0 +1,115 @@
+#!/usr/bin/env bash
+# `affinterp interpolate` on 3D meshes and `affinterp blend` end to end, on small generated meshes
+# (meshes3_files.py: a tetrahedral bar in MEDIT .mesh, a tube surface in OFF): frames written, the end frames
+# equal to source and target, a blend at e_k equal to pose k, metrics.json per frame; each kind of bad input a
+# one-line error, a non-zero exit and OUT as it was. On the cat poses of Sumner and Popovic 2004 (when present),
+# cat-0 -> cat-4 with exp-log, 11 frames as frames.npy: the inverted triangles per frame are printed, not asserted
+# (the 3D engine's own test, checks/global3/cat3_test.cpp, asserts its bound).
+# Usage: interpolate3_cli_test.sh path/to/affinterp SOURCE_DIR
+set -u
+affinterp=$(realpath "$1")
+make_mesh="python3 $2/checks/apps/meshes3_files.py"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+cd "$work" || exit 1
+
+$make_mesh bar 0 bar.mesh && $make_mesh bar 1.5708 bar90.mesh && $make_mesh bar 3 bar170.mesh
+$make_mesh tube 0 tube.off && $make_mesh tube 1 tube1.off
+for option in degenerate nan fewer split; do
+  $make_mesh bar 0.5 "bar-$option.mesh" "$option" && $make_mesh tube 0.5 "tube-$option.off" "$option"
+done
+$make_mesh bar 0.5 bar-inverted.mesh inverted
+
+# max |a - b| over the vertices of two frame files (OBJ "v x y z" lines or MEDIT Vertices), in Python.
+max_difference() {
+  python3 - "$1" "$2" <<'PY'
+import sys
+def vertices(file):
+    lines = open(file).read().split("\n")
+    if file.endswith(".obj"):
+        return [list(map(float, l.split()[1:4])) for l in lines if l.startswith("v ")]
+    start = lines.index("Vertices") + 2
+    return [list(map(float, l.split()[:3])) for l in lines[start:start + int(lines[start - 1])]]
+a = vertices(sys.argv[1])
+b = vertices(sys.argv[2]) if not sys.argv[2].endswith(".off") else [
+    list(map(float, l.split())) for l in open(sys.argv[2]).read().split("\n")[2:2 + len(a)]]
+print(max(abs(x - y) for p, q in zip(a, b) for x, y in zip(p, q)) if len(a) == len(b) else "inf")
+PY
+}
+expect_equal() {  # FRAME MESH WHAT: the frame's vertices are the mesh's to 1e-9
+  local d
+  d=$(max_difference "$1" "$2")
+  python3 -c "import sys; sys.exit(0 if float('$d') < 1e-9 else 1)" || fail "$3: differs from $2 by $d"
+}
+frame_count() { python3 -c "import json; print(len(json.load(open('$1/metrics.json'))['frames']))"; }
+
+# interpolate: a tetrahedral bar turned by 90 degrees, a tube surface turned by one radian as frames.npy.
+"$affinterp" interpolate --source bar.mesh --target bar90.mesh --out bar-run --frames 5 2>err || fail "bar: $(cat err)"
+[ "$(frame_count bar-run)" = 5 ] && [ -f bar-run/frame_0004.mesh ] || fail "bar: 5 frames"
+expect_equal bar-run/frame_0000.mesh bar.mesh "bar frame 0"
+expect_equal bar-run/frame_0004.mesh bar90.mesh "bar frame 4"
+python3 -c "
+import json; f = json.load(open('bar-run/metrics.json'))['frames'][2]
+assert all(k in f for k in ('t', 'energy', 'measure_ratio', 'max_distortion', 'inverted_elements')), f" ||
+  fail "bar: metrics.json entries"
+"$affinterp" interpolate --source tube.off --target tube1.off --out tube-run --frames 3 --format npy 2>err ||
+  fail "tube: $(cat err)"
+head -c 100 tube-run/frames.npy | grep -q "'shape': (3, 40, 3)" || fail "tube: frames.npy's shape"
+
+# blend: weight vectors (e_2 gives pose 2), and keys at times.
+"$affinterp" blend --poses bar.mesh bar90.mesh bar170.mesh --weights 0.2,0.5,0.3 --weights 0,0,1 --out blend-run \
+  2>err || fail "blend: $(cat err)"
+[ "$(frame_count blend-run)" = 2 ] || fail "blend: 2 frames"
+expect_equal blend-run/frame_0001.mesh bar170.mesh "blend at e_2"
+"$affinterp" blend --keys tube.off:0 tube1.off:0.5 tube.off:1 --times 0,0.25,0.5,1 --out keys-run 2>err ||
+  fail "keys: $(cat err)"
+[ "$(frame_count keys-run)" = 4 ] || fail "keys: 4 frames"
+expect_equal keys-run/frame_0002.obj tube1.off "keys at t = 0.5"
+"$affinterp" blend --help | grep -q -- "--allow-extrapolation" || fail "blend --help"
+
+# Bad input: one line on standard error, a non-zero exit, OUT untouched.
+mkdir kept && echo earlier >kept/earlier.txt
+refused() {  # WHAT ARGS...
+  local what=$1
+  shift
+  if "$affinterp" "$@" --out kept 2>err; then fail "$what: accepted"; fi
+  [ "$(wc -l <err)" = 1 ] && grep -q '^affinterp: ' err || fail "$what: not one line of affinterp's: $(cat err)"
+  [ "$(ls -A kept)" = earlier.txt ] && [ "$(cat kept/earlier.txt)" = earlier ] || fail "$what: OUT changed"
+}
+refused "different connectivity" interpolate --source bar.mesh --target bar-fewer.mesh
+refused "different surface" interpolate --source tube.off --target tube-fewer.off
+refused "degenerate tetrahedron" interpolate --source bar-degenerate.mesh --target bar.mesh
+refused "degenerate triangle" interpolate --source tube.off --target tube-degenerate.off
+refused "inverted tetrahedra" interpolate --source bar.mesh --target bar-inverted.mesh
+refused "NaN coordinate" interpolate --source bar.mesh --target bar-nan.mesh
+refused "NaN on a surface" interpolate --source tube.off --target tube-nan.off
+refused "disconnected" interpolate --source bar-split.mesh --target bar-split.mesh
+refused "mixed triangles and tetrahedra" interpolate --source tube.off --target bar.mesh
+refused "2D-only energy" interpolate --source bar.mesh --target bar90.mesh --energy R
+refused "2D-only symmetric" interpolate --source bar.mesh --target bar90.mesh --symmetric
+refused "2D-only locus" interpolate --source bar.mesh --target bar90.mesh --locus "0:1,2;3,4"
+refused "pin out of range" interpolate --source bar.mesh --target bar90.mesh --pin 999
+refused "wrong weight count" blend --poses bar.mesh bar90.mesh bar170.mesh --weights 0.5,0.5
+refused "off the simplex" blend --poses bar.mesh bar90.mesh bar170.mesh --weights 0.5,0.5,0 --weights -1,2,0
+refused "not numbers" blend --poses bar.mesh bar90.mesh bar170.mesh --weights 0.5,x,0
+refused "mixed poses" blend --poses bar.mesh bar90.mesh tube.off --weights 0.5,0.5,0
+refused "keys not increasing" blend --keys bar.mesh:0 bar90.mesh:0.5 bar170.mesh:0.2
+refused "time beyond the keys" blend --keys bar.mesh:0 bar90.mesh:0.5 bar170.mesh:1 --times 0,2
+"$affinterp" blend --poses bar.mesh bar90.mesh --weights -0.5,1.5 --allow-extrapolation --out extrapolated 2>err ||
+  fail "--allow-extrapolation: $(cat err)"
+
+cat=/work/shared/data/meshes3d/cat
+if [ -f "$cat/cat-0.off" ] && [ -f "$cat/cat-4.off" ]; then
+  "$affinterp" interpolate --source "$cat/cat-0.off" --target "$cat/cat-4.off" --homotopy exp --frames 11 \
+    --format npy --out cat-run 2>err || fail "cat: $(cat err)"
+  python3 -c "
+import json; m = json.load(open('cat-run/metrics.json'))
+print('cat-0 -> cat-4, exp-log, inverted triangles per frame:', [f['inverted_elements'] for f in m['frames']])"
+else
+  echo "skipped the cat: $cat/cat-0.off, cat-4.off absent"
+fi
+
+[ "$failures" = 0 ] && echo "interpolate3_cli_test: all passed"
+exit $((failures > 0))

@@ -1,0 +1,80 @@
+#include "experiments/apps/cli/frames3_output.hpp"
+
+#include "experiments/inputs/mesh3_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace affinterp::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+nlohmann::json finite_or_null3(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
+
+std::string frame3_name(int k, const global3::Mesh3& mesh) {
+  std::ostringstream name;
+  name << "frame_" << std::setw(4) << std::setfill('0') << k << io::mesh3_extension(mesh);
+  return name.str();
+}
+
+}  // namespace
+
+Frames3Output::Frames3Output(const fs::path& staging, const global3::Mesh3& reference, std::size_t frame_count,
+                             const std::string& format)
+    : staging_(staging), frame_(reference), reference_(reference) {
+  if (format == "npy") npy_.emplace(staging / "frames.npy", frame_count, reference.vertex_count(), 3);
+}
+
+nlohmann::json Frames3Output::record(int k, const Eigen::Matrix3Xd& vertices,
+                                     std::span<const Eigen::Matrix3d> local_maps, bool quality) {
+  nlohmann::json entry = {{"index", k}};
+  if (npy_) {
+    npy_->append(vertices);
+    entry["file"] = "frames.npy";
+  } else {
+    frame_.vertices = vertices;
+    entry["file"] = frame3_name(k, frame_);
+    io::write_mesh3(frame_, staging_ / entry["file"].get<std::string>());
+  }
+  if (quality) entry.update(metrics3_json(global3::frame_metrics3(reference_, vertices, local_maps)));
+  return entry;
+}
+
+void Frames3Output::close() {
+  if (npy_) npy_->close();
+}
+
+nlohmann::json metrics3_json(const global3::FrameMetrics3& m) {
+  return {{"inverted_elements", m.inverted_elements},
+          {"min_ratio", finite_or_null3(m.min_ratio)},
+          {"max_ratio", finite_or_null3(m.max_ratio)},
+          {"max_distortion", finite_or_null3(m.max_distortion)},
+          {"mean_distortion", finite_or_null3(m.mean_distortion)},
+          {"measure_ratio", finite_or_null3(m.measure_ratio)}};
+}
+
+long long most_inverted(const nlohmann::json& frames) {
+  long long worst = 0;
+  for (const auto& frame : frames)
+    if (frame.contains("inverted_elements")) worst = std::max(worst, frame["inverted_elements"].get<long long>());
+  return worst;
+}
+
+void commit_frames3(StagedOutput& staged, const fs::path& out) {
+  std::error_code ignored;
+  if (fs::is_directory(out))
+    for (const auto& entry : fs::directory_iterator(out)) {
+      const fs::path& file = entry.path();
+      const std::string extension = file.extension().string();
+      if ((file.filename().string().starts_with("frame_") && (extension == ".obj" || extension == ".mesh")) ||
+          file.filename() == "frames.npy")
+        fs::remove(file, ignored);
+    }
+  staged.commit();
+}
+
+}  // namespace affinterp::cli

@@ -1,0 +1,48 @@
+#pragma once
+// What a 3D run of `affinterp interpolate` or `affinterp blend` writes per frame: the frame's file (OBJ for a
+// surface, MEDIT .mesh for tetrahedra, or one frames.npy of shape (frames, n, 3) for all) and its entry in
+// metrics.json (theory/global3/frame_metrics3.hpp against the source or rest mesh and the frame's local maps).
+#include "experiments/inputs/frames_npy.hpp"
+#include "experiments/support/staged_output.hpp"
+#include "theory/global3/frame_metrics3.hpp"
+#include "theory/global3/mesh3.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
+
+namespace affinterp::cli {
+
+class Frames3Output {
+ public:
+  /// Frames of `reference`'s elements into `staging`; `format` is obj (one file a frame) or npy.
+  Frames3Output(const std::filesystem::path& staging, const global3::Mesh3& reference, std::size_t frame_count,
+                const std::string& format);
+  /// Writes frame k and returns its metrics.json entry: index, file, and with `quality` the metrics of
+  /// frame_metrics3 (inversion judged against `local_maps`).
+  nlohmann::json record(int k, const Eigen::Matrix3Xd& vertices, std::span<const Eigen::Matrix3d> local_maps,
+                        bool quality);
+  /// Ends frames.npy; throws MeshFileError when a frame is missing.
+  void close();
+
+ private:
+  std::filesystem::path staging_;
+  global3::Mesh3 frame_;
+  const global3::Mesh3& reference_;
+  std::optional<io::NpyFrameWriter> npy_;
+};
+
+/// metrics.json's numbers of one frame, null for a non-finite one.
+nlohmann::json metrics3_json(const global3::FrameMetrics3& metrics);
+
+/// The most inverted elements in a frame of metrics.json's "frames" (0 without quality metrics).
+long long most_inverted(const nlohmann::json& frames);
+
+/// Moves the staged files into `out`, first removing earlier frame files (frame_*.obj, frame_*.mesh, frames.npy)
+/// that this run does not replace, which would mix two runs.
+void commit_frames3(StagedOutput& staged, const std::filesystem::path& out);
+
+}  // namespace affinterp::cli

@@ -1,0 +1,130 @@
+#include "experiments/apps/cli/interpolate3.hpp"
+
+#include "experiments/apps/cli/command.hpp"
+#include "experiments/apps/cli/frames3_output.hpp"
+#include "experiments/inputs/constraint_spec.hpp"
+#include "experiments/inputs/mesh3_poses.hpp"
+#include "experiments/inputs/mesh_file.hpp"
+#include "theory/global3/interpolation3.hpp"
+
+#include <fstream>
+#include <iostream>
+
+namespace affinterp::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The barycentre's gauge in 3D: "linear[@C]" (the line between the barycentres, weight C) or "none".
+std::optional<global3::BarycentreLine3> barycentre_line(const std::string& spec) {
+  if (spec == "none") return std::nullopt;
+  if (!spec.starts_with("linear"))
+    throw CommandFailed("--barycentre-locus '" + spec + "': a path through points is 2D only (3D: linear[@C] or none)",
+                        usage_error);
+  try {
+    const std::optional<global::BarycentreLocus> locus = io::parse_barycentre(spec);
+    return global3::BarycentreLine3{locus ? locus->weight : 1.0};
+  } catch (const std::invalid_argument& e) {
+    throw CommandFailed(e.what(), usage_error);
+  }
+}
+
+/// Interpolation3's options from the request (the names and defaults of theory/global/options.hpp).
+global3::Interpolation3Options engine_options3(const io::InterpolationRequest& request, Eigen::Index vertex_count) {
+  global3::Interpolation3Options options;
+  options.homotopy = request.options.homotopy;
+  options.rotation_branch = request.options.rotation_branch;
+  options.area_weighted = request.options.area_weighted;
+  options.constraints.barycentre = barycentre_line(request.barycentre_locus);
+  try {
+    for (const std::string& pin : request.pins) options.constraints.pinned.push_back(io::parse_pin(pin));
+  } catch (const std::invalid_argument& e) {
+    throw CommandFailed(e.what(), usage_error);
+  }
+  for (const global::PinnedVertex& pin : options.constraints.pinned)
+    if (pin.vertex < 0 || pin.vertex >= vertex_count)
+      throw CommandFailed("--pin " + std::to_string(pin.vertex) + ": no such vertex (the meshes have " +
+                              std::to_string(vertex_count) + ")",
+                          usage_error);
+  return options;
+}
+
+/// metrics.json's "options", the 2D command's names (io::options_json) with E^F, the only 3D energy.
+nlohmann::json options3_json(const Interpolate3Run& run) {
+  global::InterpolationOptions used = run.request.options;
+  used.energy = global::Energy::F;
+  nlohmann::json options = io::options_json(run.request, used);
+  options["format"] = run.format, options["metrics"] = run.metrics;
+  options["times"] = run.times_given ? nlohmann::json(run.times) : nlohmann::json(nullptr);
+  return options;
+}
+
+/// Each frame's file and metrics.json entry: t, E^F's energy (with the constraints), the quality metrics.
+nlohmann::json write_frames(const Interpolate3Run& run, const global3::Interpolation3& interpolation,
+                            const global3::Mesh3& source, const fs::path& staging) {
+  Frames3Output output(staging, source, run.times.size(), run.format);
+  const bool energy = run.metrics == "all" || run.metrics == "energy";
+  const bool quality = run.metrics == "all" || run.metrics == "quality";
+  const std::vector<Eigen::Matrix3Xd> frames = interpolation.vertices_at(run.times);
+  nlohmann::json entries = nlohmann::json::array();
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    const double t = run.times[k];
+    const std::vector<Eigen::Matrix3d> maps = quality ? interpolation.local_maps_at(t) : std::vector<Eigen::Matrix3d>{};
+    nlohmann::json entry = output.record(static_cast<int>(k), frames[k], maps, quality);
+    entry["t"] = t;
+    if (energy) entry["energy"] = interpolation.energy_at(t, frames[k]);
+    entries.push_back(std::move(entry));
+  }
+  output.close();
+  return entries;
+}
+
+}  // namespace
+
+void refuse_planar_only_options(const CLI::App& command, const io::InterpolationRequest& request) {
+  if (command.count("--energy") > 0 && request.options.energy != global::Energy::F)
+    throw CommandFailed("--energy " + global::to_string(request.options.energy) +
+                            ": 3D meshes take E^F only (E^R's closed form rests on the plane's complex numbers)",
+                        usage_error);
+  for (const char* option :
+       {"--blend-weight", "--blend-weights", "--symmetric", "--locus", "--edge-direction", "--allow-flipped-target"})
+    if (command.count(option) > 0)
+      throw CommandFailed(std::string(option) + ": a 2D option, not available for 3D meshes", usage_error);
+}
+
+void run_interpolate3(const Interpolate3Run& run) {
+  io::Poses3 pair;
+  try {
+    pair = io::read_poses3({run.source, run.target});
+  } catch (const io::MeshFileError& e) {
+    throw CommandFailed(e.what(), 1);
+  }
+  if (pair.reoriented)
+    std::cerr << "note: every tetrahedron was negatively oriented; all were reversed (same solids)\n";
+  const global3::Mesh3& source = pair.poses[0];
+  std::unique_ptr<global3::Interpolation3> interpolation;
+  try {
+    interpolation = std::make_unique<global3::Interpolation3>(source, pair.poses[1],
+                                                              engine_options3(run.request, source.vertex_count()));
+  } catch (const global::RefusedProblem& e) {
+    throw CommandFailed(std::string("refused: ") + e.what(), 1);
+  }
+  StagedOutput staged(run.out);
+  const nlohmann::json frames = write_frames(run, *interpolation, source, staged.staging());
+  const nlohmann::json document = {{"source", run.source},
+                                   {"target", run.target},
+                                   {"dimension", 3},
+                                   {"vertices", source.vertex_count()},
+                                   {"elements", source.element_count()},
+                                   {"element_kind", source.corners() == 4 ? "tetrahedra" : "triangles"},
+                                   {"reoriented", pair.reoriented},
+                                   {"options", options3_json(run)},
+                                   {"frames", frames}};
+  std::ofstream(staged.staging() / "metrics.json") << document.dump(2) << "\n";
+  commit_frames3(staged, run.out);
+  std::cerr << "wrote " << run.times.size() << " frames to " << run.out
+            << " (most inverted elements in a frame: " << most_inverted(frames) << ")\n";
+}
+
+}  // namespace affinterp::cli
