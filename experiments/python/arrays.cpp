@@ -57,24 +57,36 @@ Eigen::Matrix2Xd points(const py::object& a, const std::string& name) {
   return Eigen::Map<const Eigen::Matrix2Xd>(v.data(), 2, v.shape(0));
 }
 
-Eigen::Matrix3Xi triangles(const py::object& a, const std::string& name) {
+Eigen::Matrix3Xd points3(const py::object& a, const std::string& name) {
+  const DoubleArray v = as_doubles(a, name);
+  check_shape(v, name, {-1, 3}, "(n, 3)");
+  check_finite(v, name);
+  return Eigen::Map<const Eigen::Matrix3Xd>(v.data(), 3, v.shape(0));
+}
+
+Eigen::MatrixXi elements(const py::object& a, const std::string& name, bool tetrahedra) {
+  const std::string shapes = tetrahedra ? "(m, 3) or (m, 4)" : "(m, 3)";
   const py::array raw = py::array::ensure(a);
-  if (!raw) value_error(name + ": expected an (m, 3) array of vertex indices");
+  if (!raw) value_error(name + ": expected an " + shapes + " array of vertex indices");
   const char kind = raw.dtype().kind();
   if (kind != 'i' && kind != 'u')
     value_error(name + ": expected integer vertex indices, got dtype " + std::string(py::str(raw.dtype())));
-  if (raw.ndim() != 2 || raw.shape(1) != 3) value_error(name + ": expected shape (m, 3), got " + shape_text(raw));
+  if (raw.ndim() != 2 || !(raw.shape(1) == 3 || (tetrahedra && raw.shape(1) == 4)))
+    value_error(name + ": expected shape " + shapes + ", got " + shape_text(raw));
   const auto f = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(raw);
-  Eigen::Matrix3Xi out(3, f.shape(0));
+  const auto corners = static_cast<Eigen::Index>(raw.shape(1));
+  Eigen::MatrixXi out(corners, f.shape(0));
   for (py::ssize_t k = 0; k < f.size(); ++k) {
     const long long index = f.data()[k];
     if (index < 0 || index > 0x7fffffff)
-      value_error(name + ": triangle " + std::to_string(k / 3) + " has vertex index " + std::to_string(index) +
-                  " out of range");
+      value_error(name + ": " + (corners == 3 ? "triangle " : "tetrahedron ") + std::to_string(k / corners) +
+                  " has vertex index " + std::to_string(index) + " out of range");
     out.data()[k] = static_cast<int>(index);
   }
   return out;
 }
+
+Eigen::Matrix3Xi triangles(const py::object& a, const std::string& name) { return elements(a, name, false); }
 
 DoubleArray matrices(const py::object& a, const std::string& name, int size, bool& single) {
   DoubleArray m = as_doubles(a, name);
@@ -95,6 +107,12 @@ std::vector<double> reals(const py::object& a, const std::string& name) {
   if (t.ndim() > 1) value_error(name + ": expected a real or a 1-D sequence of reals, got shape " + shape_text(t));
   check_finite(t, name);
   return {t.data(), t.data() + t.size()};
+}
+
+py::array_t<double> to_points(Eigen::Matrix3Xd&& v) {
+  auto* owned = new Eigen::Matrix3Xd(std::move(v));
+  py::capsule free(owned, [](void* p) { delete static_cast<Eigen::Matrix3Xd*>(p); });
+  return py::array_t<double>({owned->cols(), Eigen::Index{3}}, owned->data(), free);
 }
 
 py::array_t<double> to_points(Eigen::Matrix2Xd&& v) {

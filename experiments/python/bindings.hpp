@@ -10,5 +10,6 @@ void bind_sym3(pybind11::module_& m);
 void bind_decide(pybind11::module_& m);
 void bind_pair(pybind11::module_& m);
 void bind_mesh(pybind11::module_& m);
+void bind_blend(pybind11::module_& m);
 
 }  // namespace affinterp::python

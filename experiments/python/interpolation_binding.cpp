@@ -7,6 +7,7 @@
 #include "experiments/inputs/mesh_pair.hpp"
 #include "experiments/python/arrays.hpp"
 #include "experiments/python/bindings.hpp"
+#include "experiments/python/space_binding.hpp"
 
 #include <pybind11/stl.h>
 
@@ -50,9 +51,32 @@ io::InterpolationRequest request_of(const Keywords& k) {
   return request;
 }
 
+/// The keywords of a 3D interpolation: ValueError naming the first one that has no 3D counterpart (E^F is the
+/// only 3D energy; the engine's default energy is taken as E^F there).
+SpaceKeywords space_keywords(const Keywords& k) {
+  const global::InterpolationOptions defaults;
+  if (k.energy != "F" && k.energy != global::to_string(defaults.energy))
+    value_error("energy '" + k.energy + "': 3D meshes take E^F only (E^R's closed form rests on the plane)");
+  const auto refuse = [](const char* keyword) {
+    value_error(std::string(keyword) + ": a 2D keyword, not for 3D meshes");
+  };
+  if (k.blend_weight != defaults.blend_weight) refuse("blend_weight");
+  if (k.blend_weights) refuse("blend_weights");
+  if (k.symmetric) refuse("symmetric");
+  if (!k.loci.empty()) refuse("loci");
+  if (!k.edge_directions.empty()) refuse("edge_directions");
+  SpaceKeywords space{k.homotopy, k.rotation_branch, k.area_weighted, {}, k.barycentre_locus, k.time_range};
+  for (const py::object& pin : k.pins) space.pins.push_back(py::str(pin));
+  return space;
+}
+
 class Interpolation {
  public:
   Interpolation(const py::object& V0, const py::object& V1, const py::object& F, const Keywords& keywords) {
+    if (is_space_points(V0)) {
+      space_ = std::make_unique<SpaceInterpolation>(V0, V1, F, space_keywords(keywords));
+      return;
+    }
     global::Mesh source{points(V0, "V0"), triangles(F, "F")}, target{points(V1, "V1"), source.triangles};
     io::MeshPair pair;
     try {
@@ -72,6 +96,7 @@ class Interpolation {
   }
 
   py::array_t<double> vertices_at(double t) const {
+    if (space_) return space_->vertices_at(t);
     Eigen::Matrix2Xd v;
     {
       py::gil_scoped_release unlocked;
@@ -81,6 +106,7 @@ class Interpolation {
   }
 
   py::array_t<double> frames(const py::object& times) const {
+    if (space_) return space_->frames(times);
     const std::vector<double> ts = reals(times, "times");
     py::array_t<double> out(
         {static_cast<py::ssize_t>(ts.size()), static_cast<py::ssize_t>(vertex_count_), py::ssize_t{2}});
@@ -93,6 +119,7 @@ class Interpolation {
   }
 
   double energy_at(double t) const {
+    if (space_) return space_->energy_at(t);
     py::gil_scoped_release unlocked;
     return engine_->energy_at(t, frame(t)).total;
   }
@@ -125,6 +152,7 @@ class Interpolation {
   }
 
   std::unique_ptr<global::Interpolation> engine_;
+  std::unique_ptr<SpaceInterpolation> space_;  ///< set instead of engine_ for 3D meshes
   Eigen::Index vertex_count_ = 0;
 };
 
@@ -165,8 +193,10 @@ Parameters (the names, defaults and rules of `affinterp interpolate`, which are 
   barycentre_locus  'linear[@C]', 'none' or 'x1,y1;...[@C]': the barycentre's path
   time_range        (t0, t1), t0 <= t1: the times vertices_at accepts (extrapolation beyond [0, 1] allowed)
 With E^S, E^R or a blend and no pins, loci or edge directions, one edge fixes rotation and scale, as in the
-CLI. Bad input (shapes, NaN, degenerate or flipped triangles, unknown names, ...) raises ValueError with the
-CLI's one-line message.)";
+CLI. With (n, 3) vertices and (m, 3) triangles or (m, 4) tetrahedra the 3D engine runs (E^F; homotopy,
+rotation_branch, area_weighted, pins, barycentre_locus 'linear[@C]' or 'none', time_range), frames are (n, 3),
+and the 2D-only keywords raise ValueError. Bad input (shapes, NaN, degenerate or flipped triangles, unknown
+names, ...) raises ValueError with the CLI's one-line message.)";
   return doc;
 }
 

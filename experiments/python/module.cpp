@@ -7,7 +7,9 @@ PYBIND11_MODULE(affinterp, m) {
   m.doc() = R"(affinterp: rigid 2D shape interpolation with affine maps (Kaji et al., SCA 2012; Matsushita,
 thesis 2015).
 
-  Interpolation(V0, V1, F, ...)   global interpolation (Kaji §4): .vertices_at(t), .frames(times), .energy_at(t)
+  Interpolation(V0, V1, F, ...)   global interpolation (Kaji §4): .vertices_at(t), .frames(times), .energy_at(t);
+                                  (n, 3) vertices with triangles or tetrahedra: the 3D engine
+  Blend(poses, F, ...)            N-way blend of 3D poses: .vertices_at(w), w of shape (K,) or (frames, K)
   homotopy_at(A, t, homotopy)     the local homotopies A(t) of one A in GL+(2) (Kaji §3)
   good_for_area(B), good_for_norm(B)   thesis Defs 2.2.1 and 2.2.2, decided exactly
   exp3(S), eig3(S)                3x3 symmetric exponential and eigenvalues (thesis ch. 3)
@@ -22,4 +24,5 @@ Bad input raises ValueError with a one-line message.)";
   affinterp::python::bind_decide(m);
   affinterp::python::bind_pair(m);
   affinterp::python::bind_mesh(m);
+  affinterp::python::bind_blend(m);
 }

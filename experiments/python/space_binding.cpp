@@ -1,0 +1,182 @@
+#include "experiments/python/space_binding.hpp"
+
+#include "experiments/inputs/constraint_spec.hpp"
+#include "experiments/inputs/mesh3_poses.hpp"
+#include "experiments/inputs/mesh_file.hpp"
+#include "experiments/python/bindings.hpp"
+#include "theory/global3/blend3.hpp"
+
+#include <pybind11/stl.h>
+
+namespace affinterp::python {
+
+namespace {
+
+/// The meshes checked as the CLI checks them, `names` naming them in the one-line ValueError.
+void check_meshes3(const std::vector<global3::Mesh3>& meshes, const std::vector<std::string>& names) {
+  try {
+    io::check_poses3(meshes, names);
+  } catch (const io::MeshFileError& e) {
+    value_error(e.what());
+  }
+}
+
+/// The barycentre's gauge in 3D: "linear[@C]" or "none".
+std::optional<global3::BarycentreLine3> barycentre_line3(const std::string& spec) {
+  if (spec == "none") return std::nullopt;
+  if (!spec.starts_with("linear"))
+    value_error("barycentre_locus '" + spec + "': a path through points is 2D only (3D: 'linear[@C]' or 'none')");
+  const std::optional<global::BarycentreLocus> locus = io::parse_barycentre(spec);
+  return global3::BarycentreLine3{locus ? locus->weight : 1.0};
+}
+
+global3::Interpolation3Options options3(const SpaceKeywords& k, Eigen::Index vertex_count) {
+  global3::Interpolation3Options options;
+  options.homotopy = global::parse_option<global::LocalHomotopy>(k.homotopy);
+  options.rotation_branch = global::parse_option<global::RotationBranch>(k.rotation_branch);
+  options.area_weighted = k.area_weighted;
+  options.constraints.barycentre = barycentre_line3(k.barycentre_locus);
+  for (const std::string& pin : k.pins) {
+    options.constraints.pinned.push_back(io::parse_pin(pin));
+    if (options.constraints.pinned.back().vertex >= vertex_count) value_error("pins: no vertex " + pin);
+  }
+  return options;
+}
+
+/// The engine's answer to `call`, its refusals as std::invalid_argument (ValueError once the GIL is held).
+template <class Call>
+auto translated3(Call call) {
+  try {
+    return call();
+  } catch (const std::out_of_range& e) {
+    throw std::invalid_argument(e.what());
+  } catch (const global::RefusedProblem& e) {
+    throw std::invalid_argument(std::string("refused: ") + e.what());
+  }
+}
+
+/// (frames.size(), n, 3) holding `frames`.
+py::array_t<double> stacked(const std::vector<Eigen::Matrix3Xd>& frames, Eigen::Index vertex_count) {
+  py::array_t<double> out(
+      {static_cast<py::ssize_t>(frames.size()), static_cast<py::ssize_t>(vertex_count), py::ssize_t{3}});
+  for (std::size_t k = 0; k < frames.size(); ++k)
+    Eigen::Map<Eigen::Matrix3Xd>(out.mutable_data() + 3 * vertex_count * static_cast<Eigen::Index>(k), 3,
+                                 vertex_count) = frames[k];
+  return out;
+}
+
+/// affinterp.Blend: Blend3 over K poses sharing F.
+class SpaceBlend {
+ public:
+  SpaceBlend(const py::iterable& poses, const py::object& F, bool allow_extrapolation,
+             const std::string& rotation_branch, bool area_weighted) {
+    const Eigen::MatrixXi elements3 = elements(F, "F");
+    std::vector<global3::Mesh3> meshes;
+    std::vector<std::string> names;
+    for (const py::handle pose : poses) {
+      names.push_back("poses[" + std::to_string(meshes.size()) + "]");
+      meshes.push_back({points3(py::reinterpret_borrow<py::object>(pose), names.back()), elements3});
+    }
+    if (meshes.size() < 2) value_error("poses: a blend needs at least two poses, got " + std::to_string(meshes.size()));
+    check_meshes3(meshes, names);
+    global3::Blend3Options options;
+    options.allow_extrapolation = allow_extrapolation, options.area_weighted = area_weighted;
+    options.rotation_branch = global::parse_option<global::RotationBranch>(rotation_branch);
+    engine_ = translated3([&] { return std::make_unique<global3::Blend3>(meshes, options); });
+    vertex_count_ = meshes[0].vertex_count();
+  }
+
+  /// w of shape (K,): the (n, 3) blend; (frames, K): (frames, n, 3).
+  py::array_t<double> vertices_at(const py::object& w) const {
+    const DoubleArray weights = DoubleArray::ensure(w);
+    if (!weights || weights.ndim() < 1 || weights.ndim() > 2) value_error("w: expected shape (k,) or (frames, k)");
+    check_finite(weights, "w");
+    const py::ssize_t rows = weights.ndim() == 1 ? 1 : weights.shape(0), k = weights.shape(weights.ndim() - 1);
+    std::vector<Eigen::VectorXd> vectors;
+    for (py::ssize_t r = 0; r < rows; ++r)
+      vectors.push_back(Eigen::Map<const Eigen::VectorXd>(weights.data() + r * k, k));
+    std::vector<Eigen::Matrix3Xd> frames;
+    {
+      py::gil_scoped_release unlocked;
+      frames = translated3([&] { return engine_->vertices_at(vectors); });
+    }
+    if (weights.ndim() == 2) return stacked(frames, vertex_count_);
+    return to_points(std::move(frames[0]));
+  }
+
+ private:
+  std::unique_ptr<global3::Blend3> engine_;
+  Eigen::Index vertex_count_ = 0;
+};
+
+}  // namespace
+
+bool is_space_points(const py::object& V0) {
+  const py::array a = py::array::ensure(V0);
+  return a && a.ndim() == 2 && a.shape(1) == 3;
+}
+
+SpaceInterpolation::SpaceInterpolation(const py::object& V0, const py::object& V1, const py::object& F,
+                                       const SpaceKeywords& keywords)
+    : time_range_(keywords.time_range) {
+  const global3::Mesh3 source{points3(V0, "V0"), elements(F, "F")}, target{points3(V1, "V1"), source.elements};
+  check_meshes3({source, target}, {"V0", "V1"});
+  if (!(time_range_.first <= time_range_.second)) value_error("time_range: expected t0 <= t1");
+  const global3::Interpolation3Options options = options3(keywords, source.vertex_count());
+  engine_ = translated3([&] { return std::make_unique<global3::Interpolation3>(source, target, options); });
+  vertex_count_ = source.vertex_count();
+}
+
+void SpaceInterpolation::check_time(double t) const {
+  if (!(t >= time_range_.first && t <= time_range_.second))
+    throw std::invalid_argument("t = " + std::to_string(t) + " lies outside time_range");
+}
+
+py::array_t<double> SpaceInterpolation::vertices_at(double t) const {
+  check_time(t);
+  Eigen::Matrix3Xd v;
+  {
+    py::gil_scoped_release unlocked;
+    v = translated3([&] { return engine_->vertices_at(t); });
+  }
+  return to_points(std::move(v));
+}
+
+py::array_t<double> SpaceInterpolation::frames(const py::object& times) const {
+  const std::vector<double> ts = reals(times, "times");
+  for (const double t : ts) check_time(t);
+  std::vector<Eigen::Matrix3Xd> frames;
+  {
+    py::gil_scoped_release unlocked;
+    frames = translated3([&] { return engine_->vertices_at(ts); });
+  }
+  return stacked(frames, vertex_count_);
+}
+
+double SpaceInterpolation::energy_at(double t) const {
+  check_time(t);
+  py::gil_scoped_release unlocked;
+  return translated3([&] { return engine_->energy_at(t, engine_->vertices_at(t)); });
+}
+
+void bind_blend(py::module_& m) {
+  py::class_<SpaceBlend>(m, "Blend", R"(N-way blend of K >= 2 compatible 3D poses (Kaji et al.'s Lie-algebra
+parametrisation): each element's map exp(sum_k w_k log R_k) exp(sum_k w_k log S_k) from poses[0], then the
+vertices minimising E^F against these maps, one factorisation for all weight vectors.
+
+  poses                a sequence of K (n, 3) float arrays
+  F                    (m, 3) triangles or (m, 4) tetrahedra (0-based), shared by the poses
+  allow_extrapolation  accept weights off the simplex (a negative entry, or a sum other than 1)
+  rotation_branch      'consistent' (logarithms consistent over neighbours) or 'principal'
+  area_weighted        weigh each element by its rest area or volume
+Bad input raises ValueError with a one-line message.)")
+      .def(py::init<const py::iterable&, const py::object&, bool, const std::string&, bool>(), py::arg("poses"),
+           py::arg("F"), py::kw_only(), py::arg("allow_extrapolation") = false,
+           py::arg("rotation_branch") = global::to_string(global3::Blend3Options{}.rotation_branch),
+           py::arg("area_weighted") = true)
+      .def("vertices_at", &SpaceBlend::vertices_at, py::arg("w"),
+           "The blend for weights w: shape (K,) gives (n, 3), shape (frames, K) gives (frames, n, 3). ValueError "
+           "for a wrong count or, without allow_extrapolation, weights off the simplex.");
+}
+
+}  // namespace affinterp::python

@@ -1,0 +1,43 @@
+#pragma once
+// The 3D side of the affinterp module: Interpolation on (n, 3) vertices with (m, 3) triangles or (m, 4)
+// tetrahedra runs global3::Interpolation3 (interpolation_binding.cpp hands it over), and affinterp.Blend blends K
+// poses (global3::Blend3). Inputs are checked as the CLI checks them (experiments/inputs/mesh3_poses.hpp).
+#include "experiments/python/arrays.hpp"
+#include "theory/global3/interpolation3.hpp"
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace affinterp::python {
+
+/// Interpolation's keywords that carry over to 3D (the others are refused before).
+struct SpaceKeywords {
+  std::string homotopy, rotation_branch;
+  bool area_weighted = true;
+  std::vector<std::string> pins;
+  std::string barycentre_locus;
+  std::pair<double, double> time_range;
+};
+
+/// Whether V0 is an array of points in space, (n, 3).
+bool is_space_points(const py::object& V0);
+
+class SpaceInterpolation {
+ public:
+  /// Throws ValueError (one line) for bad arrays, meshes or keywords.
+  SpaceInterpolation(const py::object& V0, const py::object& V1, const py::object& F, const SpaceKeywords& keywords);
+  py::array_t<double> vertices_at(double t) const;            ///< (n, 3)
+  py::array_t<double> frames(const py::object& times) const;  ///< (k, n, 3)
+  double energy_at(double t) const;
+
+ private:
+  void check_time(double t) const;
+
+  std::unique_ptr<global3::Interpolation3> engine_;
+  Eigen::Index vertex_count_ = 0;
+  std::pair<double, double> time_range_;
+};
+
+}  // namespace affinterp::python
