@@ -63,4 +63,24 @@ Formula exp_log_norm_property(const Eigenvalues& l) {
   return cone_property(sign, cross);
 }
 
+Formula cone_lemma_fails() {
+  std::array<Polynomial, 3> a, b;
+  Polynomial sum_a, sum_b;
+  Formula hypotheses = logic::truth(true);
+  for (int i = 0; i < 3; ++i) {
+    const std::string k = std::to_string(i + 1);
+    a[i] = var("a" + k);
+    b[i] = var("b" + k);
+    const Polynomial w = var("w" + k);
+    hypotheses = hypotheses && logic::greater_equal(w, 0) &&
+                 (logic::greater(a[i] * b[i], 0) || (logic::equal(a[i], 0) && logic::equal(b[i], 0)));
+    sum_a += w * a[i];
+    sum_b += w * b[i];
+  }
+  std::array<std::array<Polynomial, 3>, 3> cross;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) cross[i][j] = a[i] * b[j] - a[j] * b[i];
+  return hypotheses && logic::less(sum_a, 0) && logic::greater(sum_b, 0) && cone_property(a, cross);
+}
+
 }  // namespace affinterp::proofs

@@ -31,5 +31,8 @@ logic::Formula cone_property(const std::array<logic::Polynomial, 3>& sign_at_0,
 logic::Formula exp_log_norm_property(const Eigenvalues& l);
 /// The polar slopes μ_i = l_i − 1 at t = 0 and μ_i l_i at t = 1 at level C.
 logic::Formula polar_norm_cone_property(const Eigenvalues& l);
+/// Lemma L15 (b) fails: generators (a_i, b_i) with a_i b_i > 0 or a_i = b_i = 0, weights w_i ≥ 0 with
+/// Σ w_i a_i < 0 < Σ w_i b_i, and no pair i, j with a_i > 0 > a_j and a_i b_j − a_j b_i > 0 (variables a1 … w3).
+logic::Formula cone_lemma_fails();
 
 }  // namespace affinterp::proofs

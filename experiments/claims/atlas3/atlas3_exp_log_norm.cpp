@@ -1,4 +1,5 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
+#include "experiments/claims/atlas3/cone_lemma.hpp"
 #include "experiments/claims/claim.hpp"
 #include "experiments/proofs/atlas3.hpp"
 #include "experiments/proofs/citations.hpp"
@@ -41,6 +42,10 @@ atlas::AtlasProof proof() {
           "polynomial in l (level C)",
       .sentences = atlas::condition_sentences(cell, "C", proofs::exp_log_norm_property(l)),
       .cites = std::string(proofs::citations::exponential),
+      .formulations = {{.method = "level C with Lemma L15 (b) itself decided (sentence L15.cone); L17's monotone "
+                                  "derivative and the exponential's monotonicity by hand",
+                        .sentences =
+                            with_cone_lemma(atlas::condition_sentences(cell, "C", proofs::exp_log_norm_property(l)))}},
       .attempts = {{.formulation = "3D Def 2.2.2 as written for R^t S^t",
                     .sentences = {},
                     .not_expressible = std::string(proofs::not_first_order_exponential)}},

@@ -1,4 +1,5 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
+#include "experiments/claims/atlas3/cone_lemma.hpp"
 #include "experiments/claims/claim.hpp"
 #include "experiments/proofs/atlas3.hpp"
 #include "experiments/proofs/goodness3_formulas.hpp"
@@ -45,7 +46,11 @@ atlas::AtlasProof proof() {
       .sentences = level_E,
       .formulations = {{.method = "level C: the cone of the per-axis slopes (mu_i, mu_i l_i), mu_i = l_i - 1, "
                                   "meets no open second quadrant (Lemma L15, Caratheodory in the plane)",
-                        .sentences = atlas::condition_sentences(cell, "C", proofs::polar_norm_cone_property(l))}},
+                        .sentences = atlas::condition_sentences(cell, "C", proofs::polar_norm_cone_property(l))},
+                       {.method = "level C with Lemma L15 (b) itself decided (sentence L15.cone): no step by hand "
+                                  "but the eigenbasis (L15 (a)) and L3",
+                        .sentences = with_cone_lemma(
+                            atlas::condition_sentences(cell, "C", proofs::polar_norm_cone_property(l)))}},
   };
 }
 

@@ -1,0 +1,13 @@
+; atlas3.polar.norm L15.cone
+(set-logic QF_NRA)
+(declare-const a1 Real)
+(declare-const a2 Real)
+(declare-const a3 Real)
+(declare-const b1 Real)
+(declare-const b2 Real)
+(declare-const b3 Real)
+(declare-const w1 Real)
+(declare-const w2 Real)
+(declare-const w3 Real)
+(assert (and (>= w1 0) (or (> (* a1 b1) 0) (and (= a1 0) (= b1 0))) (>= w2 0) (or (> (* a2 b2) 0) (and (= a2 0) (= b2 0))) (>= w3 0) (or (> (* a3 b3) 0) (and (= a3 0) (= b3 0))) (< (+ (* a1 w1) (* a2 w2) (* a3 w3)) 0) (> (+ (* b1 w1) (* b2 w2) (* b3 w3)) 0) (or (<= a1 0) (>= a2 0) (<= (+ (* a1 b2) (* (- 1) a2 b1)) 0)) (or (<= a1 0) (>= a3 0) (<= (+ (* a1 b3) (* (- 1) a3 b1)) 0)) (or (<= a2 0) (>= a1 0) (<= (+ (* (- 1) a1 b2) (* a2 b1)) 0)) (or (<= a2 0) (>= a3 0) (<= (+ (* a2 b3) (* (- 1) a3 b2)) 0)) (or (<= a3 0) (>= a1 0) (<= (+ (* (- 1) a1 b3) (* a3 b1)) 0)) (or (<= a3 0) (>= a2 0) (<= (+ (* (- 1) a2 b3) (* a3 b2)) 0))))
+(check-sat)
