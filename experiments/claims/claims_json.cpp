@@ -115,7 +115,7 @@ nlohmann::json claims_document(const ClaimRegistry& registry, const std::vector<
       {"seed", context.seed},         {"size", to_string(context.size)},
       {"environment", environment},   {"claims", claims},
       {"engine_speed", engine.speed}, {"engine_scale", engine.scale},
-      {"engine_cli", engine.cli},
+      {"engine_cli", engine.cli},     {"engine3_speed", engine.engine3},
   };
 }
 

@@ -1,5 +1,6 @@
 #include "reports/generator/summary_page.hpp"
 
+#include "experiments/measurements/engine3_speed.hpp"
 #include "reports/generator/claim_lines.hpp"
 #include "reports/generator/engine_sections.hpp"
 #include "reports/generator/legend.hpp"
@@ -100,6 +101,23 @@ void write_engine_area(std::ostringstream& md, const std::optional<measurements:
   md << "\n\n";
 }
 
+/// The 3D engine's speed (bench_3d): each benchmark's median and the spread of its repetitions, and a frame's parts.
+void write_engine3_speed(std::ostringstream& md, const std::optional<measurements::Engine3Speed>& speed) {
+  if (!speed) return;
+  md << "### 3D engine speed\n\nbench_3d on " << fixed(speed->triangles, 0) << " triangles (" << measured_on(speed->run)
+     << "): the 3D engine (E^F, exp-log) on the cat of Sumner and Popović (2004) subdivided once, or CGAL's elephant "
+        "subdivided twice without it. Measurements, not claims.\n\n"
+        "| benchmark | one iteration | median ms | least – largest ms |\n|---|---|---|---|\n";
+  for (const auto& row : speed->rows)
+    md << "| `" << row.benchmark << "` | " << cell(row.what) << " | " << fixed(row.median_ms, 2) << " | "
+       << fixed(row.range_ms.lo, 2) << " – " << fixed(row.range_ms.hi, 2) << " |\n";
+  if (speed->parts)
+    md << "\nA frame's parts (one thread, medians): local maps with the symmetric exponential "
+       << fixed(speed->parts->local_maps_ms, 2) << " ms, right-hand side " << fixed(speed->parts->right_hand_side_ms, 2)
+       << " ms, solve " << fixed(speed->parts->solve_ms, 2) << " ms.\n";
+  md << "\n";
+}
+
 void write_environment(std::ostringstream& md, const json& doc) {
   md << "## How to reproduce\n\n"
         "From a fresh clone on Debian, `bash experiments/reproduce.sh` installs what is missing, builds, "
@@ -121,6 +139,7 @@ std::string render_summary_page(const json& doc) {
   const auto speed = record<measurements::EngineSpeed>(doc, "engine_speed");
   const auto scale = record<measurements::EngineScale>(doc, "engine_scale");
   const auto cli = record<measurements::EngineCli>(doc, "engine_cli");
+  const auto engine3 = record<measurements::Engine3Speed>(doc, "engine3_speed");
   std::ostringstream md;
   md << "# affinterp report\n\n"
      << "Which claims of Kaji et al., *Mathematical Analysis on Affine Maps for 2D Shape Interpolation* "
@@ -131,6 +150,7 @@ std::string render_summary_page(const json& doc) {
   write_claims_table(md, claims);
   write_areas(md, claims);
   write_engine_area(md, speed, scale, cli);
+  write_engine3_speed(md, engine3);
   write_verdict_legend(md);
   write_strength_legend(md, claims);
   write_engine_speed(md, speed);

@@ -4,6 +4,7 @@
 #include "experiments/claims/claims_json.hpp"
 #include "experiments/claims/registry.hpp"
 #include "experiments/claims/runner.hpp"
+#include "experiments/measurements/engine3_speed.hpp"
 #include "experiments/measurements/engine_cli.hpp"
 #include "experiments/measurements/engine_scale.hpp"
 #include "experiments/measurements/engine_speed.hpp"
@@ -67,7 +68,8 @@ EngineTables engine_tables(const RunContext& context) {
     std::optional<EngineSpeed> speed = engine_speed(context.bench_dir / "bench_interp.json");
     if (speed) speed->history = engine_speed_history(bench::runs_of(context.bench_dir));
     return {record_json(speed), record_json(engine_scale(context.bench_dir / "bench_scale.json", context)),
-            record_json(engine_cli(context.bench_dir / "bench_cli_scale.json"))};
+            record_json(engine_cli(context.bench_dir / "bench_cli_scale.json")),
+            record_json(engine3_speed(context.bench_dir / "bench_3d.json"))};
   } catch (const std::runtime_error& e) {
     throw CommandFailed(std::string("benchmark outputs: ") + e.what(), 1);
   }
