@@ -1,6 +1,7 @@
 // The 3D goodness deciders (theory/local/goodness3.hpp) on worked examples, and each 3D atlas condition
 // (experiments/proofs/atlas3.hpp) against them at random rational points.
 #include "experiments/proofs/atlas3.hpp"
+#include "experiments/proofs/goodness3_formulas.hpp"
 #include "theory/local/goodness3.hpp"
 
 #include <gtest/gtest.h>
@@ -101,6 +102,17 @@ RC_GTEST_PROP(Atlas3, ExpLogNormAgreesWithTheDecider, ()) { check_cell(Homotopy:
 // Where the certificates are both missing the point is skipped: agreement where the decider answers.
 RC_GTEST_PROP(Atlas3, LinearNormAgreesWhereTheDeciderAnswers, ()) {
   RC_TAG(agrees_at_random_point(atlas3_cell(Homotopy::linear, Notion::norm)) ? "answered" : "no certificate");
+}
+
+// The level-C formulas the sentences decide (goodness3_formulas.hpp) against the exact deciders, which evaluate the
+// same per-axis slopes from the forms P, Q (polar) or from signs (exp-log).
+RC_GTEST_PROP(Atlas3, ConeFormulasAgreeWithTheDeciders, ()) {
+  using affinterp::logic::Polynomial;
+  const Rational l1 = *small_rational(1) / 8, l2 = *small_rational(1) / 8, l3 = *small_rational(1) / 8;
+  const Eigenvalues l{Polynomial::variable("l1"), Polynomial::variable("l2"), Polynomial::variable("l3")};
+  const affinterp::logic::Point p{{"l1", l1}, {"l2", l2}, {"l3", l3}};
+  RC_ASSERT(affinterp::logic::holds(polar_norm_cone_property(l), p) == local::good_for_norm_polar(l1, l2, l3));
+  RC_ASSERT(affinterp::logic::holds(exp_log_norm_property(l), p) == local::good_for_norm_exp_log(l1, l2, l3));
 }
 
 }  // namespace atlas3_test
