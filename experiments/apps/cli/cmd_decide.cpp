@@ -25,7 +25,7 @@ struct DecideOptions {
   double timeout = 25;
 };
 
-constexpr const char* footer = R"(Variables (with tr and det of the matrix named, everywhere):
+constexpr const char* footer = R"(Variables with --dim 2 (tr and det of the matrix named are macros in every cell):
   linear    a, b, c, d      A = [[a, b], [c, d]], det A > 0; A(t) = (1-t)I + tA
   polar     x, y, h         S = [[x, h], [h, y]] positive definite, the symmetric factor of A = R S;
   exp-log   x, y, h           the rotation R plays no part in either notion
