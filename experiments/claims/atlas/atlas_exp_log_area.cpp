@@ -10,7 +10,7 @@ Outcome check(const ClaimContext& ctx);
 const ClaimDeclaration claim{{
     .id = "atlas.exp-log.area",
     .chapter = Chapter::atlas,
-    .where = "beyond the papers (issue 10); Def 2.2.1, Kaji §3",
+    .where = "beyond the papers (the goodness atlas); Def 2.2.1, Kaji §3",
     .statement = "The exp-log homotopy R_{tθ} S^t, S positive definite, is good for area for every S.",
     .strength = Strength::sample,
     .check = check,
