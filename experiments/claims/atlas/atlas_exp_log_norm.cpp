@@ -10,7 +10,7 @@ Outcome check(const ClaimContext& ctx);
 const ClaimDeclaration claim{{
     .id = "atlas.exp-log.norm",
     .chapter = Chapter::atlas,
-    .where = "beyond the papers (issue 10); Def 2.2.2, Kaji §3",
+    .where = "beyond the papers (the goodness atlas); Def 2.2.2, Kaji §3",
     .statement = "The exp-log homotopy R_{tθ} S^t, S = [[x, h], [h, y]] positive definite, is good for norm exactly "
                  "when (x − 1)(y − 1) ≥ h², i.e. both eigenvalues of S lie on the same side of 1.",
     .strength = Strength::sample,
