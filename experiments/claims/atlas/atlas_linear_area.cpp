@@ -11,7 +11,7 @@ Outcome check(const ClaimContext& ctx);
 const ClaimDeclaration claim{{
     .id = "atlas.linear.area",
     .chapter = Chapter::atlas,
-    .where = "beyond the papers (issue 10); Def 2.2.1, thesis Thm 2.2.1 as corrected",
+    .where = "beyond the papers (the goodness atlas); Def 2.2.1, thesis Thm 2.2.1 as corrected",
     .statement = "The linear homotopy (1−t)I + tA, det A > 0, is good for area exactly when 2 det A ≤ tr A ≤ 2 or "
                  "2 ≤ tr A ≤ 2 det A.",
     .strength = Strength::sample,
@@ -22,7 +22,7 @@ const ClaimDeclaration claim{{
 // Method: level E — monotone on [0, 1] iff the derivative has one sign there (Lemma L1); the derivative is
 //   affine, so its signs at t = 0, 1 (tr A − 2 and 2 det A − tr A) decide it, and positivity on [0, 1] of a
 //   monotone f with f(0) = 1 is f(1) = det A > 0 (Lemma L2). Two sentences in a, b, c, d.
-// Second formulation (issue 17): Def 2.2.1 as written (level L), no lemma; QEPCAD with Hong's projection (its
+// Second formulation: Def 2.2.1 as written (level L), no lemma; QEPCAD with Hong's projection (its
 //   default, McCallum's, errs on these sentences in a, b, c, d).
 // Sizes: the sentences are the same at every size; random points 200 (quick) / 2000 (full).
 
