@@ -11,7 +11,7 @@ Outcome check(const ClaimContext& ctx);
 const ClaimDeclaration claim{{
     .id = "atlas.polar.area",
     .chapter = Chapter::atlas,
-    .where = "beyond the papers (issue 10); Def 2.2.1, thesis Thm 2.2.4 as corrected",
+    .where = "beyond the papers (the goodness atlas); Def 2.2.1, thesis Thm 2.2.4 as corrected",
     .statement = "The polar homotopy R_{tθ}((1−t)I + tS), S = [[x, h], [h, y]] positive definite, is good for area "
                  "exactly when 2 det S ≤ tr S ≤ 2 or 2 ≤ tr S ≤ 2 det S.",
     .strength = Strength::sample,
@@ -20,7 +20,7 @@ const ClaimDeclaration claim{{
 
 // Reading: Def 2.2.1; det R_{tθ} = 1 (Lemma L5), so det A_p(t) = det((1−t)I + tS).
 // Method: level E (Lemmas L1, L2, as for atlas.linear.area). Two quantifier-free sentences in x, y, h.
-// Second formulation (issue 17): Def 2.2.1 as written (level L), Lemma L5 the only lemma.
+// Second formulation: Def 2.2.1 as written (level L), Lemma L5 the only lemma.
 // Sizes: the sentences are the same at every size; random points 200 (quick) / 2000 (full).
 
 AtlasProof proof() {
