@@ -12,7 +12,7 @@ Outcome check(const ClaimContext& ctx);
 const ClaimDeclaration claim{{
     .id = "atlas.polar.norm",
     .chapter = Chapter::atlas,
-    .where = "beyond the papers (issue 10); Def 2.2.2, thesis Thm 2.2.5",
+    .where = "beyond the papers (the goodness atlas); Def 2.2.2, thesis Thm 2.2.5",
     .statement = "The polar homotopy R_{tθ}((1−t)I + tS), S = [[x, h], [h, y]] positive definite, is good for norm "
                  "exactly when (x − 1)(y − 1) ≥ h², i.e. det(S − I) ≥ 0 (Thm 2.2.5's second conjunct is implied).",
     .strength = Strength::sample,
@@ -23,7 +23,7 @@ const ClaimDeclaration claim{{
 // Method: level N — ‖·‖ monotone iff its square is (L4); with M = S − I, ½ d/dt‖(I + tM)v‖² = P(v) + t‖Mv‖²,
 //   affine with non-negative slope, so monotone for v iff ¬(P(v) < 0 < Q(v)), P = sym M, Q = P + MᵀM (L3),
 //   for all v iff for all v ≠ 0 (L6), iff Q ⪯ 0 or ∃ν ≥ 0: P − νQ ⪰ 0 (Dines, L8). Two sentences in x, y, h
-//   with ν quantified. Second formulations without Dines' theorem (issue 17): the directions (1, m), (0, 1) at
+//   with ν quantified. Second formulations without Dines' theorem: the directions (1, m), (0, 1) at
 //   levels D and E, each lemma a sentence; level L is tried for the record under thesis.thm-2.2.5.
 // Sizes: the sentences are the same at every size; random points 200 (quick) / 2000 (full).
 
