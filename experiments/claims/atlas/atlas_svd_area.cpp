@@ -11,7 +11,7 @@ Outcome check(const ClaimContext& ctx);
 const ClaimDeclaration claim{{
     .id = "atlas.svd.area",
     .chapter = Chapter::atlas,
-    .where = "beyond the papers (issue 10); Def 2.2.1, thesis Thm 2.2.2 as corrected",
+    .where = "beyond the papers (the goodness atlas); Def 2.2.1, thesis Thm 2.2.2 as corrected",
     .statement = "The SVD homotopy R_{tα}((1−t)I + tD)R_{tβ}, D = diag(x, y), x, y > 0, is good for area exactly "
                  "when 2xy ≤ x + y ≤ 2 or 2 ≤ x + y ≤ 2xy.",
     .strength = Strength::sample,
@@ -22,7 +22,7 @@ const ClaimDeclaration claim{{
 // Method: level E — monotone iff the derivative has one sign on [0, 1] (Lemma L1); it is affine, so its
 //   signs at t = 0, 1 decide it, and positivity of a monotone f with f(0) = 1 is f(1) = det D > 0 (Lemma L2).
 //   Two quantifier-free sentences in x, y.
-// Second formulation (issue 17): Def 2.2.1 as written (level L), Lemma L5 the only lemma.
+// Second formulation: Def 2.2.1 as written (level L), Lemma L5 the only lemma.
 // Sizes: the sentences are the same at every size; random points 200 (quick) / 2000 (full).
 
 AtlasProof proof() {
