@@ -11,7 +11,7 @@ Outcome check(const ClaimContext& ctx);
 const ClaimDeclaration claim{{
     .id = "atlas.svd.norm",
     .chapter = Chapter::atlas,
-    .where = "beyond the papers (issue 10); Def 2.2.2, thesis Thm 2.2.3 (exact at β = 0)",
+    .where = "beyond the papers (the goodness atlas); Def 2.2.2, thesis Thm 2.2.3 (exact at β = 0)",
     .statement = "The SVD homotopy R_{tα}((1−t)I + tD)R_{tβ}, D = diag(x, y), x, y > 0, β the right rotation's "
                  "angle in radians, is good for norm exactly when β²(x − y)²(x + y)² ≤ 4xy(x − 1)(y − 1).",
     .strength = Strength::sample,
