@@ -1,5 +1,5 @@
 #pragma once
-// What the eight atlas claims share (issue 10, item 4): the claim is that a cell's condition is exactly
+// What the eight atlas claims share: the claim is that a cell's condition is exactly
 // where its homotopy is good. Its proof is two (or more) sentences decided empty by QEPCAD B and Z3; the
 // second line of evidence is the suite's own exact decider at random rational points; the figure is the
 // region the condition describes, evaluated exactly on a grid.
@@ -35,7 +35,7 @@ struct AtlasProof {
   std::vector<std::pair<std::string, logic::Polynomial>> identities;
   /// An external published theorem the method uses as a step (experiments/proofs/citations.hpp); empty: none.
   std::string cites{};
-  /// Further formulations, each a complete proof (issue 17): the literal one first.
+  /// Further formulations, each a complete proof: the literal one first.
   std::vector<proofs::FormulationPlan> formulations{};
   /// Formulations tried for the record: decided once under their own limits, or not expressible.
   std::vector<proofs::AttemptPlan> attempts{};
