@@ -141,7 +141,7 @@ Proof cell_proof(const ClaimContext& ctx, const proofs::AtlasCell& cell, const A
                  const DecidedSentences& decided) {
   Proof made = proofs::make_proof(proof.scope, proof.method, decided.records);
   made.cites = proof.cites;
-  // The formulations closer to the definitions take QEPCAD up to ~80 s of CPU (level D): 300 s each, as the local
+  // The formulations closer to the definitions take QEPCAD far longer (level D): 300 s each, as the local
   // claims' sentences.
   proofs::add_formulations(made, proof.formulations, proof.attempts, ctx.proof_files(), {.seconds = 300});
   for (const Proof& formulation : made.formulations)
