@@ -1,5 +1,5 @@
 #pragma once
-// A claim its exact comparison confirmed, weighed against its proof (issue 10): proved for all reals when every
+// A claim its exact comparison confirmed, weighed against its proof: proved for all reals when every
 // part of the proof is decided twice as stated, inconclusive when a part contradicts the comparison.
 #include "experiments/claims/outcome.hpp"
 #include "experiments/claims/proof_strength.hpp"
