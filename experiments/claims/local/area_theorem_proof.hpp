@@ -1,6 +1,6 @@
 #pragma once
 // The proof for all reals of an area theorem of thesis §2.2 (Thms 2.2.1, 2.2.2, 2.2.4): the printed condition
-// and its correction, each as two sentences against Def 2.2.1 for det((1−t)I + tB) (issue 10), and the
+// and its correction, each as two sentences against Def 2.2.1 for det((1−t)I + tB), and the
 // counterexample of the printed condition from the deciders' point, shrunk and re-verified by goodness.hpp.
 #include "experiments/claims/local/local_proof.hpp"
 #include "theory/exact/rational.hpp"
