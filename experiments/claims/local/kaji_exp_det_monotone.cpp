@@ -27,7 +27,7 @@ const ClaimDeclaration claim{{
 // Method: in Real50 on a t grid over [−10, 10]: for det A = 1 (every fourth sample) det A^E(t) must stay 1; otherwise
 //   consecutive values must move in the sign of log det A, and the central difference (h = 1e-15) must match
 //   d/dt (λ1λ2)^t = log(λ1λ2)(λ1λ2)^t.
-//   Proof (issue 10): Lemma L10 (analytic): det A^E(t) = c^t with c = det S > 0, whose derivative is L c^t with
+//   Proof for all reals: Lemma L10 (analytic): det A^E(t) = c^t with c = det S > 0, whose derivative is L c^t with
 //   L = log c, where L has the sign of c − 1 and c^t > 0; the algebraic residue, two sentences in c, L, E = c^t
 //   (and E2, c^t at another time) decided by QEPCAD B and Z3: L·E = 0 exactly when c = 1, and L·E never takes
 //   both signs.
