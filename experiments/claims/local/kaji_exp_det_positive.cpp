@@ -26,7 +26,7 @@ const ClaimDeclaration claim{{
 // Method: det A^E(t) = det R_{tθ} det S^t = λ1^t λ2^t = (det A)^t > 0 (Kaji §3). In Real50, det A^E(t) from the
 //   matrix entries (ad − bc) is compared with (det A)^t on a t grid for random A; |t| ≤ 10 and x/y ≤ 10 keep the
 //   cancellation in ad − bc below 10^10 of the 50 digits. Draws Kaji Fig. 1.
-//   Proof (issue 10): Lemma L10 (analytic): S = Q diag(λ1, λ2) Qᵀ ≻ 0 and S^t = Q diag(λ1^t, λ2^t) Qᵀ, so
+//   Proof for all reals: Lemma L10 (analytic): S = Q diag(λ1, λ2) Qᵀ ≻ 0 and S^t = Q diag(λ1^t, λ2^t) Qᵀ, so
 //   det A^E(t) = det R_{tθ} λ1^t λ2^t = (det S)^t for every real t, positive when λ1, λ2 > 0; the algebraic
 //   residue, one sentence decided by QEPCAD B and Z3: a positive definite S has no eigenvalue ≤ 0.
 // Sizes: quick 50 matrices × 21 times; full 400 × 101; the same sentence at both sizes.
