@@ -27,7 +27,7 @@ const ClaimDeclaration claim{{
 // Method: exact sign analysis of the quadratic det A^P(t) over all real t on a (λ1, λ2) grid; where it never
 //   goes negative, the simplest such case is the counterexample, and the correction (it vanishes somewhere,
 //   and is negative somewhere iff λ1 ≠ λ2) is tested on the same grid.
-//   Proof (issue 10): sentences in the eigenvalues λ1, λ2 > 0 of S (det((1−t)I + tS) = det((1−t)I + t diag(λ1, λ2)),
+//   Proof for all reals: sentences in the eigenvalues λ1, λ2 > 0 of S (det((1−t)I + tS) = det((1−t)I + t diag(λ1, λ2)),
 //   kaji.polar.det), t over all reals, decided by QEPCAD B and Z3: the printed statement (non-empty: its point,
 //   shrunk and re-verified, is the counterexample) and the three parts of the correction (empty); under the full
 //   size the same four in the entries x, y, h of S.
