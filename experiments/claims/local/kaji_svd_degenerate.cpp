@@ -26,7 +26,7 @@ const ClaimDeclaration claim{{
 //   have), t real, and A is not a rotation: for a rotation every homotopy here keeps det = 1.
 // Method: det A_s(t) = det((1−t)I + tD) for all α, β: exact root analysis of that quadratic on an (x, y) grid,
 //   then A_s evaluated in Real50 at the root t0 = 1/(1 − x) with random α, β must be singular.
-//   Proof (issue 10): one sentence in x, y, decided by QEPCAD B and Z3: no D = diag(x, y) ≠ I, x, y > 0, keeps
+//   Proof for all reals: one sentence in x, y, decided by QEPCAD B and Z3: no D = diag(x, y) ≠ I, x, y > 0, keeps
 //   det((1−t)I + tD) ≠ 0 for every real t (det R = c² + s² = 1, Lemma L5, identity).
 // Sizes: quick step 1/4; full step 1/32; the same sentence at both sizes.
 
