@@ -1,5 +1,5 @@
 #pragma once
-// How a local claim is proved for all reals (issue 10): its sentences, decided by QEPCAD B and Z3
+// How a local claim is proved for all reals: its sentences, decided by QEPCAD B and Z3
 // (experiments/proofs), the lemmas that reduce them (L1–L13, reports/proofs/LEMMAS.md), the polynomial identities
 // the method rests on (checked by exact polynomial arithmetic), and for a non-empty sentence a counterexample
 // shrunk to small rationals and re-verified by the suite's own exact evaluators.
@@ -56,7 +56,7 @@ struct ProofPlan {
   std::vector<std::pair<std::string, Polynomial>> identities;
   /// An external published theorem the method uses as a step (experiments/proofs/citations.hpp); empty: none.
   std::string cites{};
-  /// Further formulations, each a complete proof (issue 17): the literal one first.
+  /// Further formulations, each a complete proof: the literal one first.
   std::vector<proofs::FormulationPlan> formulations{};
   /// Formulations tried for the record: decided once under their own limits, or not expressible.
   std::vector<proofs::AttemptPlan> attempts{};
