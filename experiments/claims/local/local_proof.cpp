@@ -17,8 +17,8 @@ ProofRun run_proof(const ClaimContext& ctx, const ProofPlan& plan) {
     if (!difference.is_zero()) throw std::logic_error("identity " + name + " fails: " + to_string(difference));
     run.identities[name] = "zero polynomial (exact arithmetic)";
   }
-  // The literal levels take QEPCAD up to ~45 s of CPU (140 s measured at load 14): `affinterp prove` gives every
-  // sentence 300 s; the checks only read the stored answers.
+  // The literal levels take QEPCAD far longer than the lemma chain's, and longer still on a loaded machine:
+  // `affinterp prove` gives every sentence 300 s of CPU; the checks only read the stored answers.
   const proofs::DeciderLimits limits{.seconds = 300};
   std::vector<ProofSentence> sentences;
   for (const proofs::Sentence& s : plan.sentences) {
