@@ -1,6 +1,6 @@
 #pragma once
 // The conditions thesis §2.2 prints for Defs 2.2.1 and 2.2.2, and the corrected area condition, as quantifier-free
-// formulas over the reals (issue 10): the conditions of the local claims' sentences (experiments/proofs/
+// formulas over the reals: the conditions of the local claims' sentences (experiments/proofs/
 // condition_sentences.hpp), the same as theory/local/thesis_conditions.hpp decides at rational points.
 #include "theory/logic/formula.hpp"
 
