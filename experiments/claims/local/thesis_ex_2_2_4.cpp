@@ -25,7 +25,7 @@ const ClaimDeclaration claim{{
 //   outside Kaji's (−π, π]); the matrices are what is claimed, and the evidence notes the angles.
 // Method: everything exact in ℚ(√3), where cos and sin of multiples of π/3 lie: eq. (1) for the triangle pair, the
 //   printed SVD and polar decomposition, and the four goodness statements by the exact deciders of Defs 2.2.1 and
-//   2.2.2. Draws thesis Figs 2.2–2.5. Proof (issue 10): the same statements as sentences in r3 with r3² = 3, r3 > 0
+//   2.2.2. Draws thesis Figs 2.2–2.5. Proof for all reals: the same statements as sentences in r3 with r3² = 3, r3 > 0
 //   (so r3 = √3), decided by QEPCAD B and Z3: the decompositions and eq. (1) at once, and each goodness statement
 //   at level D (area, Lemma L1) or E (norm, Lemmas L3, L4); under the full size also SVD area at level L. Beyond
 //   the thesis: the SVD interpolation of diag(2, 1) is good for norm for no β ≠ 0 (Lemma L9).
