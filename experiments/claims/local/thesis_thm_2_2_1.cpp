@@ -27,7 +27,7 @@ const ClaimDeclaration claim{{
 }};
 
 // Reading: "good for area" (Def 2.2.1) = det A_l(t) weakly monotone and > 0 on [0, 1]; A ranges over GL+(2).
-// Method: proof for all reals (issue 10; area_theorem_proof.hpp): the printed condition and its correction each
+// Method: proof for all reals (area_theorem_proof.hpp): the printed condition and its correction each
 //   against Def 2.2.1 as two sentences in a, b, c, d (A = [[a, b], [c, d]], det A > 0) at level E (Lemmas L1,
 //   L2), decided by QEPCAD B and Z3; the printed condition's counterexample from the deciders' point, shrunk and
 //   re-verified by goodness.hpp. Second line: over a (tr A, det A) grid, with a matrix of that trace and determinant
