@@ -34,7 +34,7 @@ const ClaimDeclaration claim{{
 // Reading: A_s(t) = R_{tα}((1−t)I + tD)R_{tβ} is built from a given SVD (x, y, α, β), x, y > 0, α, β ∈ [0, 2π) as
 //   in the thesis, and the condition is on x, y only. |A_s(t)v| = |((1−t)I + tD)R_{tβ}v|: α drops out, β does not,
 //   and the proof's formula for |A_s(t)v|² omits R_{tβ}.
-// Method: proof for all reals (issue 10): by Lemma L9 (reports/proofs/LEMMAS.md) A_s is good for norm iff
+// Method: proof for all reals: by Lemma L9 (reports/proofs/LEMMAS.md) A_s is good for norm iff
 //   G(t) ≥ 0 on [0, 1] (level G). Sentences in x, y, β decided by QEPCAD B and Z3: printed condition ∧ ¬G-level
 //   property (non-empty: its point, shrunk and re-verified, is the counterexample), ¬condition ∧ G(1) ≥ 0 (the
 //   property's instance t = 1: empty, so the property implies the condition), and both directions at β = 0 (empty:
