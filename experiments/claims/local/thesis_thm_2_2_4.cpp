@@ -25,7 +25,7 @@ const ClaimDeclaration claim{{
 
 // Reading: Def 2.2.1 as for Thm 2.2.1; A_p(t) = R_{tγ}((1−t)I + tS) with S = [[x, h], [h, y]] positive definite, and
 //   det A_p(t) = det((1−t)I + tS) for every γ.
-// Method: proof for all reals (issue 10; area_theorem_proof.hpp): the printed condition and its correction each
+// Method: proof for all reals (area_theorem_proof.hpp): the printed condition and its correction each
 //   against Def 2.2.1 as two sentences at level E (Lemmas L1, L2, L5), decided by QEPCAD B and Z3; the printed
 //   condition's counterexample from the deciders' point, shrunk and re-verified by goodness.hpp. Second line:
 //   over an (x, y, h) grid with xy > h², the printed condition (Thm 2.2.1's with tr S for tr A) against the
