@@ -30,10 +30,10 @@ const ClaimDeclaration claim{{
 
 // Reading: "good for norm" (Def 2.2.2) = |A_p(t)v| weakly monotone on [0, 1] for every unit v; R_{tγ} is
 //   orthogonal, so |A_p(t)v| = |((1−t)I + tS)v|.
-// Method: proof for all reals (issue 10): the printed condition against Def 2.2.2 as two sentences in x, y, h at
+// Method: proof for all reals: the printed condition against Def 2.2.2 as two sentences in x, y, h at
 //   level N (Lemmas L3, L4, L6, L8), decided by QEPCAD B and Z3, with Lemma L3 as its own sentence and the
 //   identities ½ d/dt ‖((1−t)I + tS)v‖² = vᵀPv at t = 0, vᵀQv at t = 1; a third sentence shows the second
-//   conjunct implied by the first on the domain. Second formulations without Dines' theorem (issue 17): the
+//   conjunct implied by the first on the domain. Second formulations without Dines' theorem: the
 //   directions (1, m), (0, 1) at levels D and E, each lemma a sentence (experiments/proofs/literal_formulations.hpp);
 //   level L tried for the record. Second line: over an (x, y, h) grid with xy > h², the printed
 //   condition against the exact decision of Def 2.2.2 (theory/local/goodness.hpp: it fails iff some v has P(v) < 0 <
