@@ -1,5 +1,5 @@
 #pragma once
-// `affinterp prove` (issue 18): proofs as data. The claims' checks read their deciders' answers from stored
+// `affinterp prove`: proofs as data. The claims' checks read their deciders' answers from stored
 // transcripts and never start a decider; this collects the decider runs their proofs need (the proof plan) and
 // decides the ones whose stored transcript is missing or stale, into the store the checks read.
 #include "experiments/claims/registry.hpp"
