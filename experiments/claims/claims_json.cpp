@@ -19,7 +19,7 @@ nlohmann::json formulation_json(const Proof& proof) {
       if (r.max_rss_kb) run["max_rss_kb"] = *r.max_rss_kb;
       runs.push_back(run);
     }
-    // "file" and "seconds" of the sentence are its first decider's, as the format names them.
+    // "file" and "seconds" of the sentence are its first decider's, as claims.json's format names them.
     sentences.push_back({{"name", s.name},
                          {"meaning", s.meaning},
                          {"result", s.result},
