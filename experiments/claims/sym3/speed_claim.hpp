@@ -81,7 +81,7 @@ struct RunsDecision {
 RunsDecision decide_runs(const std::vector<bench::RecordedRun>& runs, const std::vector<Reading>& readings,
                          const std::string& title);
 
-/// "2026-11-27 AMD EPYC, avx2": a run's date and its machine (bench::machine_label) without trademark signs.
+/// "<yyyy-mm-dd> AMD EPYC, avx2": a run's date and its machine (bench::machine_label) without trademark signs.
 std::string run_label(const bench::RecordedRun& run);
 
 /// "reproduced over 2 machines (AMD EPYC, avx2, g++ 12.2.0, 3 runs: reproduced; …)": what the machines together
