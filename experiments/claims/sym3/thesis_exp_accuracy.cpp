@@ -43,8 +43,8 @@ const ClaimDeclaration claim{{
 //   sampled matrix. The suite's own target is recorded alongside, and a peer table (worst certified error, non-finite
 //   and wrong results, each with a matrix) per family and algorithm. Draws error against eigenvalue gap and the peer
 //   table.
-// Sizes: quick 12 matrices per family; full 1000 (52,000 certified references at about 0.15 ms each, and
-//   12 Boost cross-checks per family at about 1 ms each: 12 to 28 s on 2 shared cores).
+// Sizes: quick 12 matrices per family; full 1000 (52,000 certified references, and 12 Boost
+//   cross-checks per family, the slower kind of reference).
 
 /// The thesis's statement: with eigenvalues closer than 10⁻⁶ treated as equal, the improved spectral
 /// decomposition has error below 10⁻⁶ for eigenvalues in [0, 3].
