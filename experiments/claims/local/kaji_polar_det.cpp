@@ -27,7 +27,7 @@ const ClaimDeclaration claim{{
 // Method: det R_{tθ} = 1, so det A^P(t) = det((1−t)I + tS). S = R_uᵀ diag(λ1, λ2) R_u with a rational rotation
 //   R_u and A = R_{u+1} S are exact; both sides have degree ≤ 2 in t, so agreeing at five times is an identity.
 //   det(R_{tθ} M) = det M is checked apart, in Real50, on random angles and matrices.
-//   Proof (issue 10): two sentences in the entries x, y, h of S ≻ 0, decided by QEPCAD B and Z3: S has two
+//   Proof for all reals: two sentences in the entries x, y, h of S ≻ 0, decided by QEPCAD B and Z3: S has two
 //   positive eigenvalues λ1, λ2 (λ1 + λ2 = tr S, λ1λ2 = det S), and det((1−t)I + tS) differs from the printed
 //   product for no such λ1, λ2 and real t; identities det R = c² + s², (RS)ᵀ(RS) = (c² + s²)S² (Lemma L5).
 // Sizes: quick λ step 1/2, 200 rotation samples; full λ step 1/8, 5000; the same sentences at both sizes.
@@ -80,8 +80,8 @@ ProofPlan proof_plan() {
                 spd && eigenvalues &&
                     logic::not_equal(det_of_blend(S, "t"), ((l1 - one) * t + one) * ((l2 - one) * t + one)))},
       {{"det R_theta = c^2 + s^2", det(R) - (c * c + s * s)}}};
-  // Issue 17: straight from the definitions, no identity: A = RS and R_{tθ} any rotations (a point on the unit
-  // circle each), the singular values of A the l1, l2 >= 0 whose squares are the eigenvalues of AᵀA (Viète).
+  // The second formulation, straight from the definitions, no identity: A = RS and R_{tθ} any rotations (a point on
+  // the unit circle each), the singular values of A the l1, l2 >= 0 whose squares are the eigenvalues of AᵀA (Viète).
   // Tried for the record: with 10 variables no decider answers factorisation-fails within 300 s.
   const Polynomial ct = var("ct"), st = var("st");
   const PolyMat2 AtA = product(transpose(RS), RS);
