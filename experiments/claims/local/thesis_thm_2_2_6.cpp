@@ -23,7 +23,7 @@ const ClaimDeclaration claim{{
 }};
 
 // Reading: Def 2.2.1 as for Thm 2.2.1, for the SVD and the polar interpolation of the same A.
-// Method: proof for all reals (issue 10): with R_β = [[c, −s], [s, c]], c² + s² = 1 (every real β), and
+// Method: proof for all reals: with R_β = [[c, −s], [s, c]], c² + s² = 1 (every real β), and
 //   S = R_βᵀ D R_β, two sentences "one good for area, the other not" in x, y, c, s at level E (Lemmas L1, L2, L5,
 //   L11) and one "tr S ≠ tr D or det S ≠ det D" (the thesis's own route), decided by QEPCAD B and Z3; under the
 //   full size also level D. Second line: A = R_α D R_β with R_β a rational rotation ((1 − u², 2u)/(1 + u²)), so the
@@ -62,7 +62,8 @@ ProofPlan proof_plan() {
                                       "x, y, beta where the polar interpolation is good for area and the SVD one not",
                                       variables, domain && !svd_good && polar_good));
   }
-  // Issue 17: Def 2.2.1 as written for both homotopies (level L); the identities of L5 and L11 the only lemmas.
+  // The second formulation: Def 2.2.1 as written for both homotopies (level L); the identities of L5 and L11 the only
+  // lemmas.
   const Formula svd_literal = area_property(D, "L"), polar_literal = area_property(S, "L");
   plan.formulations.push_back(
       {"Def 2.2.1 as written (level L) for det A_s(t) = det((1-t)I + tD) and det A_p(t) = det((1-t)I + tS): "
