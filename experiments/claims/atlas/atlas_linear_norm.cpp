@@ -14,7 +14,7 @@ Outcome check(const ClaimContext& ctx);
 const ClaimDeclaration claim{{
     .id = "atlas.linear.norm",
     .chapter = Chapter::atlas,
-    .where = "beyond the papers (issue 10); Def 2.2.2",
+    .where = "beyond the papers (the goodness atlas); Def 2.2.2",
     .statement = "The linear homotopy (1−t)I + tA, det A > 0, is good for norm exactly when sym(A) ⪰ I or "
                  "AᵀA ⪯ sym(A) (Loewner order, sym(A) = (A + Aᵀ)/2).",
     .strength = Strength::sample,
@@ -27,7 +27,7 @@ const ClaimDeclaration claim{{
 //   circle) nor the condition (sym and AᵀA are conjugated alike, and congruence keeps ⪰); the rotation that
 //   diagonalises sym(A) brings A to [[p, −k], [k, r]] (p, r the eigenvalues of sym(A), k = (c − b)/2; the skew
 //   part commutes with rotations). Then level N (Lemmas L3, L4, L6, L8) in p, r, k with ν quantified.
-// Second formulations without Dines' theorem (issue 17): in the normal form, the directions (1, m), (0, 1) at levels
+// Second formulations without Dines' theorem: in the normal form, the directions (1, m), (0, 1) at levels
 //   D and E, each lemma a sentence (L7's rotation: lemma.L7.normal-form).
 // Sizes: the sentences are the same at every size; random points 200 (quick) / 2000 (full) in a, b, c, d.
 
@@ -42,8 +42,8 @@ AtlasProof proof() {
     condition = logic::substitute(condition, name, by);
   const logic::Formula domain = logic::greater(p * r + k * k, 0);  // det A > 0
   const logic::Formula property = proofs::norm_property(normal_form, "N");
-  // Issue 17: without Dines' theorem, over the directions (1, m), (0, 1) in the normal form; the normal form's
-  // rotation decided as a sentence.
+  // The second formulations: without Dines' theorem, over the directions (1, m), (0, 1) in the normal form; the
+  // normal form's rotation decided as a sentence.
   std::vector<proofs::FormulationPlan> formulations =
       proofs::norm_directions({"conj.", {"p", "r", "k"}, domain, condition, normal_form});
   for (proofs::FormulationPlan& f : formulations) {
