@@ -25,6 +25,7 @@ KernelChecks checks() {
   KernelChecks k;
   k.lemmas = {"L1", "L2"};
   k.claims = {{"a.claim", "Claims.v: a_claim"}};
+  k.certificates = {{"a.claim", {2, 3}}};
   return k;
 }
 
@@ -34,6 +35,8 @@ TEST(KernelChecks, AKernelCheckedStatementMakesTheClaimKernelChecked) {
   EXPECT_EQ(out.strength, Strength::proved_kernel_checked);
   EXPECT_EQ(out.kernel_checked, "Claims.v: a_claim");
   EXPECT_TRUE(out.hand_steps.empty());
+  EXPECT_EQ(out.certificates.certified, 2);
+  EXPECT_EQ(out.certificates.tried, 3);
 }
 
 TEST(KernelChecks, ALemmaTheKernelHasNotCheckedIsAHandStep) {
@@ -59,6 +62,7 @@ TEST(KernelChecks, TheCommittedManifestReads) {
   const KernelChecks committed = read_kernel_checks(RunSettings::committed_answers() / "coq" / "MANIFEST.json");
   EXPECT_TRUE(committed.lemmas.contains("L9"));
   EXPECT_TRUE(committed.claims.contains("thesis.thm-2.2.5"));
+  EXPECT_GT(committed.certificates.at("thesis.thm-2.2.5").certified, 0);
   EXPECT_TRUE(read_kernel_checks("/nonexistent/MANIFEST.json").lemmas.empty()) << "absent: nothing checked";
   const std::filesystem::path broken = std::filesystem::temp_directory_path() / "affinterp_broken_manifest.json";
   std::ofstream(broken) << "{\"lemmas\": [";

@@ -78,6 +78,7 @@ nlohmann::json to_json(const ClaimResult& result) {
       {"strength", to_string(o.strength)},
       {"hand_steps", o.hand_steps},
       {"kernel_checked", optional_json(o.kernel_checked)},
+      {"coq_certificates", {{"certified", o.certificates.certified}, {"tried", o.certificates.tried}}},
       {"summary", o.summary},
       {"evidence",
        {{"method", e.method},

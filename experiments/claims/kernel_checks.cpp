@@ -23,6 +23,11 @@ KernelChecks read_kernel_checks(const std::filesystem::path& manifest) {
       if (claim.at("status") == "kernel-checked")
         checks.claims[claim.at("claim").get<std::string>()] =
             claim.at("file").get<std::string>() + ": " + claim.at("theorem").get<std::string>();
+    for (const auto& sentence : json.value("sentences", nlohmann::json::array())) {
+      SentenceCertificates& count = checks.certificates[sentence.at("claim").get<std::string>()];
+      ++count.tried;
+      if (sentence.at("status") == "certificate") ++count.certified;
+    }
   } catch (const nlohmann::json::exception& e) {
     throw std::runtime_error(manifest.string() + ": " + e.what());
   }
@@ -47,6 +52,8 @@ std::vector<std::string> lemmas_named(const Proof& proof) {
 }
 
 void apply_kernel_checks(const std::string& id, Outcome& outcome, const KernelChecks& checks) {
+  if (const auto count = checks.certificates.find(id); count != checks.certificates.end())
+    outcome.certificates = count->second;
   if (!is_proved(outcome.strength) || !outcome.proof) return;
   if (const auto theorem = checks.claims.find(id); theorem != checks.claims.end()) {
     outcome.kernel_checked = theorem->second;

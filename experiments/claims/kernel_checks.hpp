@@ -17,6 +17,9 @@ namespace affinterp::claims {
 struct KernelChecks {
   std::set<std::string> lemmas;               ///< lemma IDs ("L9") whose every theorem is kernel-checked
   std::map<std::string, std::string> claims;  ///< claim ID → "<file>: <theorem>" of its statement, kernel-checked
+  /// claim ID → how many of its empty sentences a Coq certificate (psatz, nra or a written proof) closes, of those
+  /// tried (MANIFEST.json's "sentences").
+  std::map<std::string, SentenceCertificates> certificates;
 };
 
 /// The manifest `manifest` (reports/proofs/coq/MANIFEST.json); nothing checked when it is absent. Throws
@@ -27,10 +30,10 @@ KernelChecks read_kernel_checks(const std::filesystem::path& manifest);
 /// mention: the method of every proof names each lemma it rests on.
 std::vector<std::string> lemmas_named(const Proof& proof);
 
-/// `outcome` with its strength, kernel_checked and hand_steps set from `checks` when its strength is a proved
-/// one: proved-kernel-checked when the claim `id`'s statement is a kernel-checked theorem; otherwise the lemmas
-/// its proof names that the kernel has not checked, added to its hand steps, turn `proved` into
-/// `proved-with-hand-steps`. Other strengths are left as they are.
+/// `outcome` with its sentence certificates counted, and with its strength, kernel_checked and hand_steps set from
+/// `checks` when its strength is a proved one: proved-kernel-checked when the claim `id`'s statement is a
+/// kernel-checked theorem; otherwise the lemmas its proof names that the kernel has not checked, added to its hand
+/// steps, turn `proved` into `proved-with-hand-steps`. Other strengths are left as they are.
 void apply_kernel_checks(const std::string& id, Outcome& outcome, const KernelChecks& checks);
 
 }  // namespace affinterp::claims

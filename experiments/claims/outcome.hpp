@@ -27,6 +27,11 @@ struct Evidence {
 using proofs::Proof;
 using proofs::ProofSentence;
 
+/// How many of a proof's empty sentences Coq's kernel checked through a certificate, of those tried.
+struct SentenceCertificates {
+  int certified = 0, tried = 0;
+};
+
 struct Outcome {
   Verdict verdict = Verdict::pending;
   Strength strength = Strength::unstated;  ///< how strong the verdict is
@@ -38,6 +43,7 @@ struct Outcome {
   std::vector<std::string> hand_steps;
   /// "<file>: <theorem>" of reports/proofs/coq/ when the claim's statement is a theorem Coq's kernel checked.
   std::optional<std::string> kernel_checked;
+  SentenceCertificates certificates;  ///< of its proof's empty sentences, from reports/proofs/coq/MANIFEST.json
   /// Every input needed to re-verify independently: matrices as arrays of rows, exact values as
   /// "p/q" strings, parameters under the paper's own names (x, y, h, alpha, beta, A, v, t).
   nlohmann::json counterexample = nullptr;

@@ -8,7 +8,10 @@ namespace affinterp::report {
 
 using nlohmann::json;
 
-std::string strength_words(const json& claim) {
+namespace {
+
+/// The strength in words, before the sentence certificates.
+std::string strength_label(const json& claim) {
   const std::string strength = claim.value("strength", "unstated");
   const json proof = claim.value("proof", json());
   if (strength == "proved-kernel-checked")
@@ -30,6 +33,16 @@ std::string strength_words(const json& claim) {
   if (strength == "sample") return "sample only";
   if (strength == "measured") return "measured";
   return "not stated";
+}
+
+}  // namespace
+
+std::string strength_words(const json& claim) {
+  const json certificates = claim.value("coq_certificates", json::object());
+  const int tried = certificates.value("tried", 0);
+  if (tried == 0) return strength_label(claim);
+  return strength_label(claim) + "; Coq certificates for " + std::to_string(certificates.value("certified", 0)) +
+         " of " + std::to_string(tried) + " empty sentences";
 }
 
 std::string one_line_evidence(const json& evidence) {
