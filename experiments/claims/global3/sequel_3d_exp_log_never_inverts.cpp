@@ -1,6 +1,8 @@
 #include "experiments/claims/claim.hpp"
 #include "experiments/claims/global3/figures3.hpp"
+#include "experiments/inputs/shapes3d/bar3.hpp"
 #include "experiments/inputs/shapes3d/demo_poses.hpp"
+#include "experiments/inputs/shapes3d/tetrahedralised.hpp"
 #include "theory/global3/interpolation3.hpp"
 #include "theory/local3/svd3.hpp"
 
@@ -9,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <string>
 
 namespace affinterp::claims::sequel_3d_exp_log_never_inverts {
@@ -30,12 +33,13 @@ const ClaimDeclaration claim{{
 // Reading: in 3D as in 2D (kaji.exp.det-positive), det R^t = 1 and det S^t = e^{t tr log S}. The polar homotopy
 //   R^t((1 − t)I + tS) cannot invert either (S ≻ 0, so (1 − t)I + tS ≻ 0 on [0, 1]): the counterexample is the
 //   linear homotopy's only.
-// Method: every element's local map A_i(t) of Interpolation3 (exp-log, consistent branch) on the project's
-//   elephant poses (CGAL's elephant.off, rest → bent, rest → twisted: experiments/inputs/shapes3d/demo_poses.hpp)
-//   and, when ../shared/data has them, the cat poses cat-0 → cat-4 and cat-0 → cat-7 (Sumner and Popović 2004), at
-//   each grid t: det A_i(t) > 0 and |det A_i(t) / e^{t tr log S_i} − 1| ≤ 10⁻⁹. The linear homotopy's
-//   counterexample is exact: A = diag(−1, −1, 1), a half turn, det((1 − t)I + tA) = (1 − 2t)² = 0 at t = 1/2, in
-//   integers.
+// Method: every element's local map A_i(t) of Interpolation3 (exp-log, consistent branch) on a capsule of
+//   tetrahedra meshed by CGAL's Mesh_3 (length 6, radius 1/2, cells of about 1/4: tetrahedralised.hpp) towards its
+//   twist by 1.5π, on the project's elephant poses (CGAL's elephant.off, rest → bent, rest → twisted:
+//   experiments/inputs/shapes3d/demo_poses.hpp) and, when ../shared/data has them, the cat poses cat-0 → cat-4 and
+//   cat-0 → cat-7 (Sumner and Popović 2004), at each grid t: det A_i(t) > 0 and |det A_i(t) / e^{t tr log S_i} − 1| ≤
+//   10⁻⁹. The linear homotopy's counterexample is exact: A = diag(−1, −1, 1), a half turn, det((1 − t)I + tA) = (1 −
+//   2t)² = 0 at t = 1/2, in integers.
 // Sizes: quick t ∈ {1/4, 1/2, 3/4}; full t = 0.1, 0.2, …, 0.9; every element of each pair (no random draw).
 
 constexpr double tolerance = 1e-9;
@@ -82,6 +86,9 @@ bool linear_half_turn_inverts() {
 
 std::vector<std::pair<std::string, std::pair<global3::Mesh3, global3::Mesh3>>> pairs() {
   std::vector<std::pair<std::string, std::pair<global3::Mesh3, global3::Mesh3>>> out;
+  const global3::Mesh3 capsule = shapes3d::tetrahedralised_capsule(6, 0.25);
+  out.push_back(
+      {"Mesh_3 capsule -> twisted by 1.5 pi", {capsule, shapes3d::twisted(capsule, 1.5 * std::numbers::pi, 6)}});
   if (const auto e = shapes3d::elephant_poses(global3_figures::demo_folder())) {
     out.push_back({"elephant rest -> bent", {(*e)[0], (*e)[1]}});
     out.push_back({"elephant rest -> twisted", {(*e)[0], (*e)[2]}});
