@@ -36,8 +36,8 @@ BoxAxes box_axes(const Eigen::Matrix3Xd& v) {
   side.minCoeff(&shortest);
   if (shortest == longest) shortest = (longest + 1) % 3;  // a cube: any two distinct axes
   const Eigen::Index middle = 3 - longest - shortest;
-  return {(lo + hi) / 2, Eigen::Vector3d::Unit(longest), Eigen::Vector3d::Unit(middle),
-          Eigen::Vector3d::Unit(shortest), side[longest] / 2};
+  return {(lo + hi) / 2, Eigen::Vector3d::Unit(longest), Eigen::Vector3d::Unit(middle), Eigen::Vector3d::Unit(shortest),
+          side[longest] / 2};
 }
 
 }  // namespace
@@ -53,8 +53,8 @@ Mesh3 bent_about_centre(const Mesh3& mesh, double angle) {
     const Eigen::Vector3d d = mesh.vertices.col(k) - box.centre;
     const double u = d.dot(box.longest), n = d.dot(box.middle), w = d.dot(box.shortest);
     const double theta = u / R, rho = R - n;
-    out.vertices.col(k) = box.centre + rho * std::sin(theta) * box.longest +
-                          (R - rho * std::cos(theta)) * box.middle + w * box.shortest;
+    out.vertices.col(k) =
+        box.centre + rho * std::sin(theta) * box.longest + (R - rho * std::cos(theta)) * box.middle + w * box.shortest;
   }
   return out;
 }
