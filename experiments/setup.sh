@@ -30,7 +30,7 @@ build_packages=(
 # OpenBLAS is not safe to call concurrently (it returned wrong factors, theory/global/sparse_factor.hpp).
 run_packages=(
   libopenblas0-pthread chromium qepcad z3 cvc5 ginac-tools clang libclang-rt-14-dev clang-format libcgal-demo
-  python3-numpy python3-pytest python3-matplotlib fonts-dejavu-core coq libcoq-coquelicot coinor-csdp
+  python3-numpy python3-pytest python3-matplotlib fonts-dejavu-core coq libcoq-coquelicot coinor-csdp libjs-three
 )
 
 missing() {

@@ -54,9 +54,13 @@ python3 -c "
 import json; f = json.load(open('bar-run/metrics.json'))['frames'][2]
 assert all(k in f for k in ('t', 'energy', 'measure_ratio', 'max_distortion', 'inverted_elements')), f" ||
   fail "bar: metrics.json entries"
-"$affinterp" interpolate --source tube.off --target tube1.off --out tube-run --frames 3 --format npy 2>err ||
+if [ -f /usr/share/javascript/three/build/three.min.js ]; then  # libjs-three, which setup.sh installs
+  grep -q "THREE.OrbitControls" bar-run/viewer.html || fail "bar: viewer.html with three.js inlined"
+fi
+"$affinterp" interpolate --source tube.off --target tube1.off --out tube-run --frames 3 --format npy --no-figures 2>err ||
   fail "tube: $(cat err)"
 head -c 100 tube-run/frames.npy | grep -q "'shape': (3, 40, 3)" || fail "tube: frames.npy's shape"
+[ ! -e tube-run/viewer.html ] || fail "tube: a viewer despite --no-figures"
 
 # blend: weight vectors (e_2 gives pose 2), and keys at times.
 "$affinterp" blend --poses bar.mesh bar90.mesh bar170.mesh --weights 0.2,0.5,0.3 --weights 0,0,1 --out blend-run \

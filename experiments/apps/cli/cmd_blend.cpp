@@ -10,6 +10,7 @@
 #include "theory/global3/keyframes3.hpp"
 
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -26,6 +27,7 @@ struct BlendOptions {
   int frames = 11;                                ///< --keys without --times: evenly from the first key to the last
   global3::Blend3Options engine;
   std::string out, format = "obj", metrics = "all";
+  bool figures = true;  ///< OUT/viewer.html
 };
 
 /// A comma-separated list of finite reals; `option` names it in the error.
@@ -60,6 +62,20 @@ struct BlendFrame {
   std::optional<double> t;
 };
 
+/// The slider's labels: "t = T" for keyframes, the weights for a blend.
+std::vector<std::string> frame_labels(const std::vector<BlendFrame>& frames) {
+  std::vector<std::string> labels;
+  for (const BlendFrame& frame : frames) {
+    std::ostringstream label;
+    label << std::setprecision(3);
+    if (frame.t) label << "t = " << *frame.t << ", ";
+    label << "w = (";
+    for (Eigen::Index k = 0; k < frame.weights.size(); ++k) label << (k ? ", " : "") << frame.weights[k];
+    labels.push_back(label.str() + ")");
+  }
+  return labels;
+}
+
 /// Writes the frames of `blend` at `frames`' weights into OUT with metrics.json, after staging all of it.
 void write_blend(const BlendOptions& o, const global3::Blend3& blend, const global3::Mesh3& rest,
                  const std::vector<BlendFrame>& frames, nlohmann::json document) {
@@ -78,6 +94,9 @@ void write_blend(const BlendOptions& o, const global3::Blend3& blend, const glob
     entries.push_back(std::move(entry));
   }
   output.close();
+  if (o.figures)
+    write_viewer3_or_note(staged.staging(), "blend of " + std::to_string(blend.pose_count()) + " poses", rest, solved,
+                          frame_labels(frames));
   document["vertices"] = rest.vertex_count(), document["elements"] = rest.element_count();
   document["element_kind"] = rest.corners() == 4 ? "tetrahedra" : "triangles";
   document["options"] = {{"rotation_branch", global::to_string(o.engine.rotation_branch)},
@@ -156,7 +175,8 @@ constexpr const char* blend_description =
     "exp(sum_k w_k log S_k) from the first pose, then the E^F solve (weights off the simplex only with "
     "--allow-extrapolation); with --keys A:0 B:0.5 C:1 frames through the poses at those times (--times or "
     "--frames), each segment the blend of its two keys (continuous at the keys). Writes OUT/frame_0000.obj (.mesh "
-    "for tetrahedra) ... or OUT/frames.npy (frames, n, 3), and OUT/metrics.json. On any error OUT keeps its earlier "
+    "for tetrahedra) ... or OUT/frames.npy (frames, n, 3), OUT/metrics.json and OUT/viewer.html (orbit, a slider over "
+    "the frames, faces coloured by distortion or inverted elements). On any error OUT keeps its earlier "
     "content.";
 
 void add_blend_inputs(CLI::App& cmd, BlendOptions& o) {
@@ -183,6 +203,7 @@ void add_blend_outputs(CLI::App& cmd, BlendOptions& o) {
   cmd.add_option("--metrics", o.metrics, "Per-frame quality metrics in metrics.json: all or none")
       ->check(CLI::IsMember({"all", "none"}))
       ->capture_default_str();
+  cmd.add_flag("!--no-figures", o.figures, "Write only frames and metrics.json (no viewer.html)");
 }
 
 }  // namespace

@@ -351,7 +351,7 @@ void run_any(const InterpolateOptions& o, const CLI::App& cmd) {
   run3.source = o.source, run3.target = o.target, run3.out = o.out, run3.request = o.request;
   run3.times = frame_times(o, run3.request.options);
   run3.times_given = o.times.has_value();
-  run3.format = o.format, run3.metrics = o.metrics;
+  run3.format = o.format, run3.metrics = o.metrics, run3.figures = o.figures;
   run_interpolate3(run3);
 }
 

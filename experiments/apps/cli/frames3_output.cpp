@@ -1,10 +1,12 @@
 #include "experiments/apps/cli/frames3_output.hpp"
 
 #include "experiments/inputs/mesh3_file.hpp"
+#include "plots/viewer/viewer3.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <iostream>
 #include <sstream>
 
 namespace affinterp::cli {
@@ -62,6 +64,17 @@ long long most_inverted(const nlohmann::json& frames) {
   for (const auto& frame : frames)
     if (frame.contains("inverted_elements")) worst = std::max(worst, frame["inverted_elements"].get<long long>());
   return worst;
+}
+
+void write_viewer3_or_note(const fs::path& folder, const std::string& title, const global3::Mesh3& rest,
+                           const std::vector<Eigen::Matrix3Xd>& frames, const std::vector<std::string>& labels) {
+  std::vector<plots::Viewer3Frame> shown;
+  for (std::size_t k = 0; k < frames.size(); ++k) shown.push_back({labels[k], frames[k]});
+  try {
+    plots::write_viewer3(folder / "viewer.html", title, rest, shown);
+  } catch (const std::runtime_error& e) {
+    std::cerr << "note: no viewer.html: " << e.what() << "\n";
+  }
 }
 
 void commit_frames3(StagedOutput& staged, const fs::path& out) {

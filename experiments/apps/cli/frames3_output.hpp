@@ -13,6 +13,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace affinterp::cli {
 
@@ -40,6 +41,11 @@ nlohmann::json metrics3_json(const global3::FrameMetrics3& metrics);
 
 /// The most inverted elements in a frame of metrics.json's "frames" (0 without quality metrics).
 long long most_inverted(const nlohmann::json& frames);
+
+/// OUT/viewer.html of `frames` (labelled by `labels`) into `folder`, or a note on standard error when the
+/// viewer cannot be written (three.js not installed): the frames stand without it.
+void write_viewer3_or_note(const std::filesystem::path& folder, const std::string& title, const global3::Mesh3& rest,
+                           const std::vector<Eigen::Matrix3Xd>& frames, const std::vector<std::string>& labels);
 
 /// Moves the staged files into `out`, first removing earlier frame files (frame_*.obj, frame_*.mesh, frames.npy)
 /// that this run does not replace, which would mix two runs.

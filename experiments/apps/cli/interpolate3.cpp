@@ -8,7 +8,9 @@
 #include "theory/global3/interpolation3.hpp"
 
 #include <fstream>
+#include <iomanip>
 #include <iostream>
+#include <sstream>
 
 namespace affinterp::cli {
 
@@ -62,11 +64,11 @@ nlohmann::json options3_json(const Interpolate3Run& run) {
 
 /// Each frame's file and metrics.json entry: t, E^F's energy (with the constraints), the quality metrics.
 nlohmann::json write_frames(const Interpolate3Run& run, const global3::Interpolation3& interpolation,
-                            const global3::Mesh3& source, const fs::path& staging) {
+                            const global3::Mesh3& source, const std::vector<Eigen::Matrix3Xd>& frames,
+                            const fs::path& staging) {
   Frames3Output output(staging, source, run.times.size(), run.format);
   const bool energy = run.metrics == "all" || run.metrics == "energy";
   const bool quality = run.metrics == "all" || run.metrics == "quality";
-  const std::vector<Eigen::Matrix3Xd> frames = interpolation.vertices_at(run.times);
   nlohmann::json entries = nlohmann::json::array();
   for (std::size_t k = 0; k < frames.size(); ++k) {
     const double t = run.times[k];
@@ -78,6 +80,21 @@ nlohmann::json write_frames(const Interpolate3Run& run, const global3::Interpola
   }
   output.close();
   return entries;
+}
+
+/// OUT/viewer.html: the frames on a time slider.
+void write_viewer(const Interpolate3Run& run, const global3::Mesh3& source, const std::vector<Eigen::Matrix3Xd>& frames,
+                  const fs::path& staging) {
+  std::vector<std::string> labels;
+  for (const double t : run.times) {
+    std::ostringstream label;
+    label << "t = " << std::setprecision(3) << t;
+    labels.push_back(label.str());
+  }
+  const std::string title = fs::path(run.source).filename().string() + " -> " +
+                            fs::path(run.target).filename().string() + " (" +
+                            global::to_string(run.request.options.homotopy) + ", E^F)";
+  write_viewer3_or_note(staging, title, source, frames, labels);
 }
 
 }  // namespace
@@ -111,7 +128,9 @@ void run_interpolate3(const Interpolate3Run& run) {
     throw CommandFailed(std::string("refused: ") + e.what(), 1);
   }
   StagedOutput staged(run.out);
-  const nlohmann::json frames = write_frames(run, *interpolation, source, staged.staging());
+  const std::vector<Eigen::Matrix3Xd> solved = interpolation->vertices_at(run.times);
+  const nlohmann::json frames = write_frames(run, *interpolation, source, solved, staged.staging());
+  if (run.figures) write_viewer(run, source, solved, staged.staging());
   const nlohmann::json document = {{"source", run.source},
                                    {"target", run.target},
                                    {"dimension", 3},

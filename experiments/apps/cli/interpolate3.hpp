@@ -18,6 +18,7 @@ struct Interpolate3Run {
   std::vector<double> times;  ///< the frames' times, in order
   bool times_given = false;   ///< --times rather than --frames (metrics.json's "times")
   std::string format = "obj", metrics = "all";
+  bool figures = true;  ///< OUT/viewer.html (plots/viewer/viewer3.hpp)
 };
 
 /// Throws CommandFailed (usage) naming the first option `command` was given that the 3D engine does not take:
@@ -25,7 +26,7 @@ struct Interpolate3Run {
 /// flipped target, a barycentre locus through points.
 void refuse_planar_only_options(const CLI::App& command, const io::InterpolationRequest& request);
 
-/// Reads, checks, interpolates and writes OUT (frames, metrics.json); throws CommandFailed.
+/// Reads, checks, interpolates and writes OUT (frames, metrics.json, the viewer); throws CommandFailed.
 void run_interpolate3(const Interpolate3Run& run);
 
 }  // namespace affinterp::cli
