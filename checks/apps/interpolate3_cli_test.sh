@@ -62,6 +62,19 @@ fi
 head -c 100 tube-run/frames.npy | grep -q "'shape': (3, 40, 3)" || fail "tube: frames.npy's shape"
 [ ! -e tube-run/viewer.html ] || fail "tube: a viewer despite --no-figures"
 
+# The other surface formats, read by CGAL's polygon-soup reader (STL's repeated corners merged).
+for format in ply stl obj; do
+  $make_mesh tube 0 "tube.$format" && $make_mesh tube 1 "tube1.$format"
+  "$affinterp" interpolate --source "tube.$format" --target "tube1.$format" --out "$format-run" --frames 3 \
+    --no-figures 2>err || fail "$format: $(cat err)"
+  if [ "$format" = stl ]; then  # merged corners come in the facets' order: the target as read is the reference
+    "$affinterp" interpolate --source tube1.stl --target tube1.stl --out stl-target --frames 2 --no-figures 2>err
+    expect_equal stl-run/frame_0002.obj stl-target/frame_0000.obj "stl: last frame"
+  else
+    expect_equal "$format-run/frame_0002.obj" tube1.off "$format: last frame"
+  fi
+done
+
 # blend: weight vectors (e_2 gives pose 2), and keys at times.
 "$affinterp" blend --poses bar.mesh bar90.mesh bar170.mesh --weights 0.2,0.5,0.3 --weights 0,0,1 --out blend-run \
   2>err || fail "blend: $(cat err)"

@@ -1,6 +1,7 @@
 """Small 3D mesh files for the CLI tests of the 3D engine, written without NumPy: a bar of tetrahedra (MEDIT
 .mesh, Kuhn's six tetrahedra a box, as checks/global3/meshes3.hpp builds it) and an open tube of triangles (OFF),
-each in the rest pose and turned about the x axis by turn * x / length.
+each in the rest pose and turned about the x axis by turn * x / length. A tube file ending in .ply, .stl or .obj
+is written in that format (ASCII) instead.
 
 Usage: meshes3_files.py KIND TURN FILE [OPTION], KIND bar or tube; OPTION degenerate (a tetrahedron or triangle
 collapsed), inverted (mirrored in z: each tetrahedron
@@ -59,6 +60,22 @@ def write(file, vertices, elements):
             f.write(f"Tetrahedra\n{len(elements)}\n")
             f.writelines(" ".join(str(i + 1) for i in e) + " 0\n" for e in elements)
             f.write("End\n")
+        elif file.endswith(".ply"):
+            f.write(f"ply\nformat ascii 1.0\nelement vertex {len(vertices)}\nproperty double x\nproperty double y\n"
+                    f"property double z\nelement face {len(elements)}\nproperty list uchar int vertex_indices\n"
+                    "end_header\n")
+            f.writelines(f"{x!r} {y!r} {z!r}\n" for x, y, z in vertices)
+            f.writelines("3 " + " ".join(map(str, e)) + "\n" for e in elements)
+        elif file.endswith(".stl"):  # corners repeated per facet, as STL stores them
+            f.write("solid tube\n")
+            for e in elements:
+                f.write("facet normal 0 0 0\nouter loop\n")
+                f.writelines("vertex {!r} {!r} {!r}\n".format(*vertices[i]) for i in e)
+                f.write("endloop\nendfacet\n")
+            f.write("endsolid tube\n")
+        elif file.endswith(".obj"):
+            f.writelines(f"v {x!r} {y!r} {z!r}\n" for x, y, z in vertices)
+            f.writelines("f " + " ".join(str(i + 1) for i in e) + "\n" for e in elements)
         else:
             f.write(f"OFF\n{len(vertices)} {len(elements)} 0\n")
             f.writelines(f"{x!r} {y!r} {z!r}\n" for x, y, z in vertices)
