@@ -62,6 +62,13 @@ struct BlendFrame {
   std::optional<double> t;
 };
 
+/// The viewer's title: the poses' file names, or the keys.
+std::string blend_title(const BlendOptions& o) {
+  std::string title = o.keys.empty() ? "blend of" : "keys";
+  for (const std::string& input : o.keys.empty() ? o.poses : o.keys) title += " " + fs::path(input).filename().string();
+  return title;
+}
+
 /// The slider's labels: "t = T" for keyframes, the weights for a blend.
 std::vector<std::string> frame_labels(const std::vector<BlendFrame>& frames) {
   std::vector<std::string> labels;
@@ -94,9 +101,7 @@ void write_blend(const BlendOptions& o, const global3::Blend3& blend, const glob
     entries.push_back(std::move(entry));
   }
   output.close();
-  if (o.figures)
-    write_viewer3_or_note(staged.staging(), "blend of " + std::to_string(blend.pose_count()) + " poses", rest, solved,
-                          frame_labels(frames));
+  if (o.figures) write_viewer3_or_note(staged.staging(), blend_title(o), rest, solved, frame_labels(frames));
   document["vertices"] = rest.vertex_count(), document["elements"] = rest.element_count();
   document["element_kind"] = rest.corners() == 4 ? "tetrahedra" : "triangles";
   document["options"] = {{"rotation_branch", global::to_string(o.engine.rotation_branch)},
