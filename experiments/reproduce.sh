@@ -4,8 +4,8 @@
 # stale, run the speed benchmarks, decide every claim at full size, draw the figures, and write
 # reports/claims.json, reports/REPORT.md and reports/claims/. Outputs are replaced only when a step succeeds.
 #   --scale     also run the engine's scale study: meshes up to 1M triangles (bench_scale), the CLI against the
-#               engine at that size (bench_cli_scale) and the 1M-triangle spiral with every energy through the
-#               CLI (ctest -L scale). Without it the report shows the latest committed scale run, with its date
+#               engine at that size (bench_cli_scale), the 3D engine on 1.4M triangles (bench_3d_scale) and the
+#               1M-triangle spiral with every energy through the CLI (ctest -L scale). Without it the report shows the latest committed scale run, with its date
 #               and machine.
 #   --reprove   re-decide every committed sentence first (QEPCAD B, Z3) and fail if any answer differs from
 #               the committed one (reports/proofs/); without it only missing or stale answers are decided.
@@ -78,7 +78,7 @@ done
 rm -rf "$staging"
 # The other programs once each; the scale study's only with --scale.
 other_programs=(bench_figures)
-((scale)) && other_programs+=(bench_scale bench_cli_scale)
+((scale)) && other_programs+=(bench_scale bench_cli_scale bench_3d_scale)
 for name in "${other_programs[@]}"; do
   [ -x "$root/build/bin/$name" ] || continue
   echo "==> benchmark $name"
