@@ -5,8 +5,8 @@
 # reports/claims.json, reports/REPORT.md and reports/claims/. Outputs are replaced only when a step succeeds.
 #   --scale     also run the engine's scale study: meshes up to 1M triangles (bench_scale), the CLI against the
 #               engine at that size (bench_cli_scale), the 3D engine on 1.4M triangles (bench_3d_scale) and the
-#               1M-triangle spiral with every energy through the CLI (ctest -L scale). Without it the report shows the latest committed scale run, with its date
-#               and machine.
+#               1M-triangle spiral with every energy through the CLI (ctest -L scale). Without it the report
+#               shows the latest committed scale run, with its date and machine.
 #   --reprove   re-decide every committed sentence first (QEPCAD B, Z3) and fail if any answer differs from
 #               the committed one (reports/proofs/); without it only missing or stale answers are decided.
 # Other arguments go to `affinterp claims` (e.g. --only ID, --seed N).
