@@ -27,7 +27,7 @@ build_packages=(
 # libopenblas0-pthread: CHOLMOD's BLAS and LAPACK at run time, through the libblas.so.3 / liblapack.so.3
 # alternatives (Debian's default is the reference BLAS, several times slower in the supernodal factorisation at
 # 1M triangles). The threaded build, as the engine factorises frames on several threads at once: Debian's serial
-# OpenBLAS is not safe to call concurrently (it returned wrong factors, theory/global/sparse_factor.hpp).
+# OpenBLAS is not safe to call concurrently: frames factorised in parallel got wrong factors.
 run_packages=(
   libopenblas0-pthread chromium qepcad z3 cvc5 ginac-tools clang libclang-rt-14-dev clang-format libcgal-demo
   python3-numpy python3-pytest python3-matplotlib fonts-dejavu-core coq libcoq-coquelicot coinor-csdp libjs-three
