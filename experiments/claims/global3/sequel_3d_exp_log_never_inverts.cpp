@@ -137,7 +137,8 @@ Outcome check(const ClaimContext& ctx) {
   if (!holds) out.counterexample = {{"inverted", tally.inverted}, {"worst", tally.worst}};
   out.evidence.method =
       "det of every element's exp-log local map (Interpolation3::local_maps_at) on the listed pose pairs at each grid "
-      "t, against e^{t tr log S_i} (tr log S_i = Σ log σ_j from svd3); linear counterexample in integers";
+      "t, against e^{t tr log S_i} (tr log S_i = Σ log σ_j from svd3); the cat poses are Sumner and Popović's "
+      "(SIGGRAPH 2004); linear counterexample in exact rationals";
   out.evidence.sample_size = tally.maps;
   out.evidence.tolerance = tolerance;
   out.evidence.worst_deviation = tally.worst;
