@@ -62,6 +62,15 @@ fi
 head -c 100 tube-run/frames.npy | grep -q "'shape': (3, 40, 3)" || fail "tube: frames.npy's shape"
 [ ! -e tube-run/viewer.html ] || fail "tube: a viewer despite --no-figures"
 
+# Tetrahedra all negatively oriented are reversed for the engine (a note), the frames keep the file's corners.
+$make_mesh bar 0 bar-reversed.mesh reversed && $make_mesh bar 1.5708 bar90-reversed.mesh reversed
+"$affinterp" interpolate --source bar-reversed.mesh --target bar90-reversed.mesh --out reversed-run --frames 3 \
+  --no-figures 2>err || fail "reversed: $(cat err)"
+grep -q "all were reversed" err || fail "reversed: no note"
+diff <(sed -n '/Tetrahedra/,$p' bar-reversed.mesh) <(sed -n '/Tetrahedra/,$p' reversed-run/frame_0002.mesh) >/dev/null ||
+  fail "reversed: the frames' tetrahedra are not the file's"
+expect_equal reversed-run/frame_0002.mesh bar90-reversed.mesh "reversed: last frame"
+
 # The other surface formats, read by CGAL's polygon-soup reader (STL's repeated corners merged).
 for format in ply stl obj; do
   $make_mesh tube 0 "tube.$format" && $make_mesh tube 1 "tube1.$format"

@@ -6,7 +6,8 @@ is written in that format (ASCII) instead.
 Usage: meshes3_files.py KIND TURN FILE [OPTION], KIND bar or tube; OPTION degenerate (a tetrahedron or triangle
 collapsed), inverted (mirrored in z: each tetrahedron
 inverted), nan (a coordinate not a number), fewer (one element left out),
-split (a second, disconnected bar)."""
+split (a second, disconnected bar), reversed (every
+tetrahedron's corners 1 and 2 swapped)."""
 import math
 import sys
 from itertools import permutations
@@ -91,6 +92,8 @@ def main(kind, turn, file, option=None):
         vertices = [[x, y, -z] for x, y, z in vertices]
     elif option == "nan":
         vertices[3][1] = float("nan")
+    elif option == "reversed":  # every tetrahedron negatively oriented, as some meshers write them
+        elements = [[e[0], e[2], e[1], e[3]] for e in elements]
     elif option == "fewer":
         elements = elements[1:]
     elif option == "split":

@@ -84,13 +84,13 @@ std::vector<std::string> frame_labels(const std::vector<BlendFrame>& frames) {
 }
 
 /// Writes the frames of `blend` at `frames`' weights into OUT with metrics.json, after staging all of it.
-void write_blend(const BlendOptions& o, const global3::Blend3& blend, const global3::Mesh3& rest,
+void write_blend(const BlendOptions& o, const global3::Blend3& blend, const global3::Mesh3& rest, bool reoriented,
                  const std::vector<BlendFrame>& frames, nlohmann::json document) {
   std::vector<Eigen::VectorXd> weights;
   for (const BlendFrame& frame : frames) weights.push_back(frame.weights);
   const std::vector<Eigen::Matrix3Xd> solved = blend.vertices_at(weights);
   StagedOutput staged(o.out);
-  Frames3Output output(staged.staging(), rest, frames.size(), o.format);
+  Frames3Output output(staged.staging(), rest, frames.size(), o.format, reoriented);
   const bool quality = o.metrics == "all";
   nlohmann::json entries = nlohmann::json::array();
   for (std::size_t k = 0; k < frames.size(); ++k) {
@@ -128,7 +128,7 @@ void run_weights(const BlendOptions& o) {
   try {
     const global3::Blend3 blend(read.poses, o.engine);
     for (const BlendFrame& frame : frames) blend.require_valid_weights(frame.weights);
-    write_blend(o, blend, read.poses[0], frames, {{"poses", o.poses}});
+    write_blend(o, blend, read.poses[0], read.reoriented, frames, {{"poses", o.poses}});
   } catch (const global::RefusedProblem& e) {
     throw CommandFailed(std::string("refused: ") + e.what(), 1);
   }
@@ -168,7 +168,7 @@ void run_keys(const BlendOptions& o) {
         throw CommandFailed("--times: " + std::to_string(t) + " lies outside the key times", usage_error);
       frames.push_back({keyframes.weights_at(t), t});
     }
-    write_blend(o, keyframes.blend(), read.poses[0], frames, {{"keys", o.keys}});
+    write_blend(o, keyframes.blend(), read.poses[0], read.reoriented, frames, {{"keys", o.keys}});
   } catch (const global::RefusedProblem& e) {
     throw CommandFailed(std::string("refused: ") + e.what(), 1);
   }

@@ -26,8 +26,9 @@ std::string frame3_name(int k, const global3::Mesh3& mesh) {
 }  // namespace
 
 Frames3Output::Frames3Output(const fs::path& staging, const global3::Mesh3& reference, std::size_t frame_count,
-                             const std::string& format)
+                             const std::string& format, bool reoriented)
     : staging_(staging), frame_(reference), reference_(reference) {
+  if (reoriented) frame_.elements.row(1).swap(frame_.elements.row(2));
   if (format == "npy") npy_.emplace(staging / "frames.npy", frame_count, reference.vertex_count(), 3);
 }
 

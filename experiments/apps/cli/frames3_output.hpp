@@ -19,9 +19,10 @@ namespace affinterp::cli {
 
 class Frames3Output {
  public:
-  /// Frames of `reference`'s elements into `staging`; `format` is obj (one file a frame) or npy.
+  /// Frames of `reference`'s elements into `staging`; `format` is obj (one file a frame) or npy. With `reoriented`
+  /// (io::Poses3::reoriented) the frame files keep the input files' corner order.
   Frames3Output(const std::filesystem::path& staging, const global3::Mesh3& reference, std::size_t frame_count,
-                const std::string& format);
+                const std::string& format, bool reoriented = false);
   /// Writes frame k and returns its metrics.json entry: index, file, and with `quality` the metrics of
   /// frame_metrics3 (inversion judged against `local_maps`).
   nlohmann::json record(int k, const Eigen::Matrix3Xd& vertices, std::span<const Eigen::Matrix3d> local_maps,

@@ -64,9 +64,9 @@ nlohmann::json options3_json(const Interpolate3Run& run) {
 
 /// Each frame's file and metrics.json entry: t, E^F's energy (with the constraints), the quality metrics.
 nlohmann::json write_frames(const Interpolate3Run& run, const global3::Interpolation3& interpolation,
-                            const global3::Mesh3& source, const std::vector<Eigen::Matrix3Xd>& frames,
+                            const global3::Mesh3& source, bool reoriented, const std::vector<Eigen::Matrix3Xd>& frames,
                             const fs::path& staging) {
-  Frames3Output output(staging, source, run.times.size(), run.format);
+  Frames3Output output(staging, source, run.times.size(), run.format, reoriented);
   const bool energy = run.metrics == "all" || run.metrics == "energy";
   const bool quality = run.metrics == "all" || run.metrics == "quality";
   nlohmann::json entries = nlohmann::json::array();
@@ -129,7 +129,7 @@ void run_interpolate3(const Interpolate3Run& run) {
   }
   StagedOutput staged(run.out);
   const std::vector<Eigen::Matrix3Xd> solved = interpolation->vertices_at(run.times);
-  const nlohmann::json frames = write_frames(run, *interpolation, source, solved, staged.staging());
+  const nlohmann::json frames = write_frames(run, *interpolation, source, pair.reoriented, solved, staged.staging());
   if (run.figures) write_viewer(run, source, solved, staged.staging());
   const nlohmann::json document = {{"source", run.source},
                                    {"target", run.target},
