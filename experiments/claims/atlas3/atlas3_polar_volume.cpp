@@ -1,13 +1,9 @@
 #include "experiments/claims/atlas/proved_cell.hpp"
 #include "experiments/claims/atlas3/through_linear_volume.hpp"
 #include "experiments/claims/claim.hpp"
-#include "experiments/proofs/atlas3.hpp"
-#include "experiments/proofs/goodness3_formulas.hpp"
 
 namespace affinterp::claims::atlas3::atlas3_polar_volume {
 namespace {
-
-using exact::Rational;
 
 Outcome check(const ClaimContext& ctx);
 
@@ -24,33 +20,7 @@ const ClaimDeclaration claim{{
     .check = check,
 }};
 
-// Reading: 3D Def 2.2.1; R^t have determinant 1 (Lemma L14), so det A(t) = det((1−t)I + tΛ) = ∏(1 + t(l_i − 1)).
-// Method: level D (Lemma L1) in l1, l2, l3 with t quantified: two sentences. Second formulation: through the
-//   linear cell (Lemma L16; experiments/claims/atlas3/through_linear_volume.hpp).
-// Sizes: the sentences are the same at every size; random points 200 (quick) / 2000 (full).
-
-atlas::AtlasProof proof() {
-  using logic::Polynomial;
-  const proofs::AtlasCell& cell = proofs::atlas3_cell(proofs::Homotopy::polar, proofs::Notion::volume);
-  const proofs::Eigenvalues l{Polynomial::variable("l1"), Polynomial::variable("l2"), Polynomial::variable("l3")};
-  return atlas::AtlasProof{
-      .scope = cell.domain_words,
-      .method =
-          "3D Def 2.2.1 for det((1-t)I + t diag(l1, l2, l3)) = prod(1 + t(l_i - 1)) (the rotations have "
-          "determinant 1, Lemma L14) at level D: positive on [0, 1] and the derivative of one sign there "
-          "(Lemma L1)",
-      .sentences = atlas::condition_sentences(
-          cell, "D", proofs::volume_property(proofs::det_of_diagonal_blend(l, Polynomial::variable("t")))),
-      .identities = {vieta_identity(cell)},
-      .formulations = {through_linear_volume(cell)},
-  };
-}
-
-Outcome check(const ClaimContext& ctx) {
-  return atlas::atlas_outcome(
-      ctx, proofs::atlas3_cell(proofs::Homotopy::polar, proofs::Notion::volume), proof(),
-      {{"l1", "l2", 0, 4, {{"l3", Rational(1, 4)}}, "l3 = 1/4"}, {"l1", "l2", 0, 4, {{"l3", Rational(3)}}, "l3 = 3"}});
-}
+Outcome check(const ClaimContext& ctx) { return eigenvalue_volume_outcome(ctx, proofs::Homotopy::polar); }
 
 }  // namespace
 }  // namespace affinterp::claims::atlas3::atlas3_polar_volume

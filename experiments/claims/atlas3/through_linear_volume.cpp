@@ -36,4 +36,30 @@ std::pair<std::string, Polynomial> vieta_identity(const proofs::AtlasCell& eigen
           proofs::det_of_diagonal_blend(l, t) - proofs::det_by_invariants(m.at("c1"), m.at("c2"), m.at("c3"), t)};
 }
 
+namespace {
+
+atlas::AtlasProof eigenvalue_volume_proof(const proofs::AtlasCell& cell) {
+  const proofs::Eigenvalues l{Polynomial::variable("l1"), Polynomial::variable("l2"), Polynomial::variable("l3")};
+  return atlas::AtlasProof{
+      .scope = cell.domain_words,
+      .method =
+          "3D Def 2.2.1 for det((1-t)I + t diag(l1, l2, l3)) = prod(1 + t(l_i - 1)) (the rotations have "
+          "determinant 1, Lemma L14) at level D: positive on [0, 1] and the derivative of one sign there "
+          "(Lemma L1)",
+      .sentences = atlas::condition_sentences(
+          cell, "D", proofs::volume_property(proofs::det_of_diagonal_blend(l, Polynomial::variable("t")))),
+      .identities = {vieta_identity(cell)},
+      .formulations = {through_linear_volume(cell)},
+  };
+}
+
+}  // namespace
+
+Outcome eigenvalue_volume_outcome(const ClaimContext& ctx, proofs::Homotopy homotopy) {
+  const proofs::AtlasCell& cell = proofs::atlas3_cell(homotopy, proofs::Notion::volume);
+  return atlas::atlas_outcome(ctx, cell, eigenvalue_volume_proof(cell),
+                              {{"l1", "l2", 0, 4, {{"l3", exact::Rational(1, 4)}}, "l3 = 1/4"},
+                               {"l1", "l2", 0, 4, {{"l3", exact::Rational(3)}}, "l3 = 3"}});
+}
+
 }  // namespace affinterp::claims::atlas3
