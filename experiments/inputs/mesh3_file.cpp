@@ -1,9 +1,7 @@
 #include "experiments/inputs/mesh3_file.hpp"
 
 #include "experiments/inputs/mesh_file.hpp"
-
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/polygon_soup_io.h>
+#include "experiments/inputs/polygon_soup_file.hpp"
 
 #include <array>
 #include <cctype>
@@ -107,35 +105,10 @@ void skip_medit_section(MeditTokens& tokens, int entries) {
 }
 
 Mesh3 read_surface3(const std::filesystem::path& file) {
-  using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
-  const std::string name = file.string();
-  std::vector<Point> points;
-  std::vector<std::vector<std::size_t>> polygons;
-  if (!CGAL::IO::read_polygon_soup(name, points, polygons))
-    throw MeshFileError(name + ": not a readable " + file.extension().string().substr(1) +
-                        " polygon soup (CGAL::IO::read_polygon_soup refused it)");
-  if (points.size() > 0x7fffffff || polygons.size() > 0x7fffffff)
-    throw MeshFileError(name + ": more than 2^31 - 1 vertices or faces");
+  TriangleSoup soup = read_triangle_soup(file);
   Mesh3 mesh;
-  mesh.vertices.resize(3, static_cast<Eigen::Index>(points.size()));
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    const Point& p = points[k];
-    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-      throw MeshFileError(name + ": vertex " + std::to_string(k) + " is not finite");
-    mesh.vertices.col(static_cast<Eigen::Index>(k)) << p.x(), p.y(), p.z();
-  }
-  mesh.elements.resize(3, static_cast<Eigen::Index>(polygons.size()));
-  for (std::size_t i = 0; i < polygons.size(); ++i) {
-    if (polygons[i].size() != 3)
-      throw MeshFileError(
-          name + ": face " + std::to_string(i) + " has " + std::to_string(polygons[i].size()) +
-          " vertices (triangles only: a triangulation chosen by the reader could differ between poses)");
-    for (int c = 0; c < 3; ++c) {
-      if (polygons[i][static_cast<std::size_t>(c)] >= points.size())
-        throw MeshFileError(name + ": face " + std::to_string(i) + " names a vertex out of range");
-      mesh.elements(c, static_cast<Eigen::Index>(i)) = static_cast<int>(polygons[i][static_cast<std::size_t>(c)]);
-    }
-  }
+  mesh.vertices = std::move(soup.vertices);
+  mesh.elements = std::move(soup.triangles);
   return mesh;
 }
 
