@@ -4,8 +4,6 @@
 namespace affinterp::claims::atlas3::atlas3_svd_singular_values {
 namespace {
 
-using exact::Rational;
-
 Outcome check(const ClaimContext& ctx);
 
 const ClaimDeclaration claim{{
@@ -19,26 +17,7 @@ const ClaimDeclaration claim{{
     .check = check,
 }};
 
-// Reading: A(t) is good for singular values when σ1(t) ≥ σ2(t) ≥ σ3(t) are each monotone on [0, 1] (L25).
-// Method: Lemma L25 — the rotations do not change singular values, those of the remaining symmetric positive
-//   definite factor are its eigenvalues, and these keep their order on (0, 1]; the residue sentences say so.
-// Sizes: the sentences are the same at every size; the suite has no decider to compare (nothing is left to evaluate).
-
-atlas::AtlasProof proof() {
-  const proofs::AtlasCell& cell = singular_values_cell(proofs::Homotopy::svd);
-  return atlas::AtlasProof{
-      .scope = cell.domain_words,
-      .method =
-          "Lemma L25: the sorted singular values of A(t) are 1 + t(l_(k) − 1), each monotone; the residue sentences "
-          "(positivity and order on (0, 1]) are empty",
-      .sentences = blend_order_sentences(),
-  };
-}
-
-Outcome check(const ClaimContext& ctx) {
-  return atlas::atlas_outcome(ctx, singular_values_cell(proofs::Homotopy::svd), proof(),
-                              {{"l1", "l2", 0, 3, {{"l3", Rational(1, 2)}}, "l3 = 1/2"}});
-}
+Outcome check(const ClaimContext& ctx) { return blend_singular_values_outcome(ctx, proofs::Homotopy::svd); }
 
 }  // namespace
 }  // namespace affinterp::claims::atlas3::atlas3_svd_singular_values

@@ -60,4 +60,16 @@ std::vector<proofs::Sentence> exponent_order_sentences() {
       logic::greater(La, Lb) && logic::greater(t, 0) && logic::less_equal(t, 1) && logic::less_equal(t * La, t * Lb))};
 }
 
+Outcome blend_singular_values_outcome(const ClaimContext& ctx, proofs::Homotopy homotopy) {
+  const proofs::AtlasCell& cell = singular_values_cell(homotopy);
+  const atlas::AtlasProof proof{
+      .scope = cell.domain_words,
+      .method =
+          "Lemma L25: the sorted singular values of A(t) are 1 + t(l_(k) − 1), each monotone; the residue sentences "
+          "(positivity and order on (0, 1]) are empty",
+      .sentences = blend_order_sentences(),
+  };
+  return atlas::atlas_outcome(ctx, cell, proof, {{"l1", "l2", 0, 3, {{"l3", exact::Rational(1, 2)}}, "l3 = 1/2"}});
+}
+
 }  // namespace affinterp::claims::atlas3
