@@ -50,6 +50,10 @@ frame_count() { python3 -c "import json; print(len(json.load(open('$1/metrics.js
 [ "$(frame_count bar-run)" = 5 ] && [ -f bar-run/frame_0004.mesh ] || fail "bar: 5 frames"
 expect_equal bar-run/frame_0000.mesh bar.mesh "bar frame 0"
 expect_equal bar-run/frame_0004.mesh bar90.mesh "bar frame 4"
+"$affinterp" interpolate --source bar.mesh --target bar90.mesh --out bar-symmetric --frames 3 --symmetric --no-figures \
+  2>err || fail "bar --symmetric: $(cat err)"
+expect_equal bar-symmetric/frame_0000.mesh bar.mesh "bar --symmetric frame 0"
+expect_equal bar-symmetric/frame_0002.mesh bar90.mesh "bar --symmetric frame 2"
 python3 -c "
 import json; f = json.load(open('bar-run/metrics.json'))['frames'][2]
 assert all(k in f for k in ('t', 'energy', 'measure_ratio', 'max_distortion', 'inverted_elements')), f" ||
@@ -114,7 +118,6 @@ refused "NaN on a surface" interpolate --source tube.off --target tube-nan.off
 refused "disconnected" interpolate --source bar-split.mesh --target bar-split.mesh
 refused "mixed triangles and tetrahedra" interpolate --source tube.off --target bar.mesh
 refused "2D-only energy" interpolate --source bar.mesh --target bar90.mesh --energy R
-refused "2D-only symmetric" interpolate --source bar.mesh --target bar90.mesh --symmetric
 refused "2D-only locus" interpolate --source bar.mesh --target bar90.mesh --locus "0:1,2;3,4"
 refused "pin out of range" interpolate --source bar.mesh --target bar90.mesh --pin 999
 refused "wrong weight count" blend --poses bar.mesh bar90.mesh bar170.mesh --weights 0.5,0.5

@@ -71,27 +71,32 @@ TEST(Interpolation3, EndsAreTheSourceAndTheTarget) {
       }
 }
 
-/// The minimiser of Σ_i w_i ‖(X_i − A_i E_i) E_i⁺‖²_F + Σ c‖v_k − r_k‖² + c_o ‖mean v − u‖², written as one dense
-/// least-squares problem in the 3n coordinates (row by row from the definition) and solved by QR.
-Eigen::Matrix3Xd dense_minimiser(const Mesh3& rest, const std::vector<Eigen::Matrix3d>& A, const Eigen::VectorXd& w,
-                                 const Constraints3& constraints, const ConstraintTargets3& targets) {
-  const Eigen::Index n = rest.vertex_count(), d = rest.corners() - 1;
+/// The minimiser of Σ_s w_s ‖(X_s − A_s E_s) E_s⁺‖²_F + Σ c‖v_k − r_k‖² + c_o ‖mean v − u‖², written as one dense
+/// least-squares problem in the 3n coordinates (row by row from the definition) and solved by QR; the terms s run
+/// over the elements of each rest pose in turn (one pose, or the source and the target when symmetrised).
+Eigen::Matrix3Xd dense_minimiser(const std::vector<const Mesh3*>& rests, const std::vector<Eigen::Matrix3d>& A,
+                                 const Eigen::VectorXd& w, const Constraints3& constraints,
+                                 const ConstraintTargets3& targets) {
+  const Eigen::Index n = rests.front()->vertex_count(), d = rests.front()->corners() - 1;
+  const Eigen::Index m = rests.front()->element_count();
   std::vector<Eigen::RowVectorXd> rows;
   std::vector<double> rhs;
-  for (Eigen::Index i = 0; i < rest.element_count(); ++i) {
+  for (Eigen::Index s = 0; s < m * static_cast<Eigen::Index>(rests.size()); ++s) {
+    const Mesh3& rest = *rests[static_cast<std::size_t>(s / m)];
+    const Eigen::Index i = s % m;
     Eigen::MatrixXd E(3, d);
     for (Eigen::Index c = 1; c <= d; ++c) E.col(c - 1) = rest.corner(i, static_cast<int>(c)) - rest.corner(i, 0);
     const Eigen::MatrixXd pinv = E.completeOrthogonalDecomposition().pseudoInverse();  // d × 3
-    const Eigen::MatrixXd target = A[static_cast<std::size_t>(i)] * E * pinv;
+    const Eigen::MatrixXd target = A[static_cast<std::size_t>(s)] * E * pinv;
     for (int r = 0; r < 3; ++r)  // residual entry (r, col) = Σ_c (x_c − x_0)_r pinv(c, col) − target(r, col)
       for (int col = 0; col < 3; ++col) {
         Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(3 * n);
         for (Eigen::Index c = 1; c <= d; ++c) {
-          row[3 * rest.elements(c, i) + r] += std::sqrt(w[i]) * pinv(c - 1, col);
-          row[3 * rest.elements(0, i) + r] -= std::sqrt(w[i]) * pinv(c - 1, col);
+          row[3 * rest.elements(c, i) + r] += std::sqrt(w[s]) * pinv(c - 1, col);
+          row[3 * rest.elements(0, i) + r] -= std::sqrt(w[s]) * pinv(c - 1, col);
         }
         rows.push_back(row);
-        rhs.push_back(std::sqrt(w[i]) * target(r, col));
+        rhs.push_back(std::sqrt(w[s]) * target(r, col));
       }
   }
   for (std::size_t j = 0; j < constraints.pinned.size(); ++j)
@@ -131,11 +136,38 @@ TEST(Interpolation3, IsTheDenseLeastSquaresMinimiser) {
         for (double t : {0.3, 0.7}) {
           const Eigen::Matrix3Xd v = engine.vertices_at(t);
           const Eigen::Matrix3Xd reference = dense_minimiser(
-              pair.source, engine.local_maps_at(t), engine.system().weights(), constraints, engine.targets_at(t));
+              {&pair.source}, engine.local_maps_at(t), engine.system().weights(), constraints, engine.targets_at(t));
           EXPECT_LT((v - reference).cwiseAbs().maxCoeff(), 1e-10 * box_diagonal(reference)) << pair.name;
           EXPECT_LE(engine.energy_at(t, v), engine.energy_at(t, reference) * (1 + 1e-12) + 1e-14) << pair.name;
         }
       }
+}
+
+// Symmetrised, E′(t) = E(t) + E^{−1}(1 − t) is the dense minimiser of both sums, the reverse terms fitting the
+// target's elements to the homotopies of the reverse maps A_i⁻¹ at 1 − t with logarithms −ω_i (the forward engine's
+// local maps of the swapped pair, whose consistent walk gives −ω_i); the ends are the meshes, and swapping source
+// and target gives the same frames at 1 − t. SVD is left out of the swap: its reverse paths decompose A_i⁻¹, whose
+// factors' logarithms are not A_i's negated, so only its ends are checked.
+TEST(Interpolation3, SymmetrisedIsTheMinimiserOfBothSumsAndSwapsSourceAndTarget) {
+  for (const Pair& pair : pairs())
+    for (LocalHomotopy homotopy : homotopies) {
+      const auto symmetric = options([&](auto& o) { o.homotopy = homotopy, o.symmetric = true; });
+      const Interpolation3 engine(pair.source, pair.target, symmetric), swapped(pair.target, pair.source, symmetric);
+      const double box = box_diagonal(pair.target.vertices);
+      EXPECT_LT((engine.vertices_at(0.0) - pair.source.vertices).cwiseAbs().maxCoeff(), 1e-9 * box) << pair.name;
+      EXPECT_LT((engine.vertices_at(1.0) - pair.target.vertices).cwiseAbs().maxCoeff(), 1e-9 * box) << pair.name;
+      if (homotopy == LocalHomotopy::svd) continue;
+      for (double t : {0.3, 0.7}) {
+        std::vector<Eigen::Matrix3d> A = engine.local_maps_at(t);
+        const std::vector<Eigen::Matrix3d> reverse = swapped.local_maps_at(1 - t);
+        A.insert(A.end(), reverse.begin(), reverse.end());
+        const Eigen::Matrix3Xd v = engine.vertices_at(t);
+        const Eigen::Matrix3Xd reference = dense_minimiser({&pair.source, &pair.target}, A, engine.system().weights(),
+                                                           engine.options().constraints, engine.targets_at(t));
+        EXPECT_LT((v - reference).cwiseAbs().maxCoeff(), 1e-10 * box) << pair.name << " t = " << t;
+        EXPECT_LT((v - swapped.vertices_at(1 - t)).cwiseAbs().maxCoeff(), 1e-10 * box) << pair.name << " t = " << t;
+      }
+    }
 }
 
 // The batched local maps are the local3 homotopies of each element (exp-log through sym3::exp_batched).

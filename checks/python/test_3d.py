@@ -59,10 +59,11 @@ def one_line_value_error(call, *words):
 
 @pytest.mark.parametrize("mesh", [bar, tube])
 @pytest.mark.parametrize("homotopy", ["exp", "polar", "linear", "svd"])
-def test_interpolation_ends_are_source_and_target(mesh, homotopy):
+@pytest.mark.parametrize("symmetric", [False, True])
+def test_interpolation_ends_are_source_and_target(mesh, homotopy, symmetric):
     V, F = mesh()
     W = twisted(V, np.pi / 2)
-    interpolation = affinterp.Interpolation(V, W, F, homotopy=homotopy)
+    interpolation = affinterp.Interpolation(V, W, F, homotopy=homotopy, symmetric=symmetric)
     frames = interpolation.frames([0, 0.5, 1])
     assert frames.shape == (3, len(V), 3)
     np.testing.assert_allclose(frames[0], V, atol=1e-9)
@@ -81,10 +82,14 @@ def test_interpolation_matches_the_cli(tmp_path):
             f.write(f"Tetrahedra\n{len(T)}\n" + "".join(" ".join(str(i + 1) for i in t) + " 0\n" for t in T) + "End\n")
     subprocess.run([CLI, "interpolate", "--source", tmp_path / "a.mesh", "--target", tmp_path / "b.mesh", "--out",
                     tmp_path / "out", "--frames", "3", "--format", "npy"], check=True, capture_output=True)
+    subprocess.run([CLI, "interpolate", "--source", tmp_path / "a.mesh", "--target", tmp_path / "b.mesh", "--out",
+                    tmp_path / "sym", "--frames", "3", "--format", "npy", "--symmetric"], check=True, capture_output=True)
     # the same bits: no contraction is left to the compiler (CMakeLists.txt), so the templates the CLI and the
     # module each compile round alike
     np.testing.assert_array_equal(np.load(tmp_path / "out" / "frames.npy"),
                                   affinterp.Interpolation(V, W, T).frames([0, 0.5, 1]))
+    np.testing.assert_array_equal(np.load(tmp_path / "sym" / "frames.npy"),
+                                  affinterp.Interpolation(V, W, T, symmetric=True).frames([0, 0.5, 1]))
 
 
 @pytest.mark.parametrize("mesh", [bar, tube])
@@ -114,7 +119,7 @@ def test_bad_input_raises_one_line_value_errors():
     one_line_value_error(lambda: affinterp.Interpolation(V, nan, T), "V1", "nan")
     one_line_value_error(lambda: affinterp.Interpolation(V, W, T[:, :2]), "F", "(m, 3) or (m, 4)")
     one_line_value_error(lambda: affinterp.Interpolation(V, W, T, energy="S"), "energy")
-    for keyword, value in (("symmetric", True), ("loci", ["0:1,2,3"]), ("edge_directions", ["0:1"]),
+    for keyword, value in (("loci", ["0:1,2,3"]), ("edge_directions", ["0:1"]),
                            ("blend_weight", 0.25)):
         one_line_value_error(lambda: affinterp.Interpolation(V, W, T, **{keyword: value}), keyword)
     one_line_value_error(lambda: affinterp.Interpolation(V, W, T, barycentre_locus="0,0;1,1"), "2D only")

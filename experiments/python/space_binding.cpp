@@ -34,7 +34,7 @@ global3::Interpolation3Options options3(const SpaceKeywords& k, Eigen::Index ver
   global3::Interpolation3Options options;
   options.homotopy = global::parse_option<global::LocalHomotopy>(k.homotopy);
   options.rotation_branch = global::parse_option<global::RotationBranch>(k.rotation_branch);
-  options.area_weighted = k.area_weighted;
+  options.area_weighted = k.area_weighted, options.symmetric = k.symmetric;
   options.constraints.barycentre = barycentre_line3(k.barycentre_locus);
   for (const std::string& pin : k.pins) {
     options.constraints.pinned.push_back(io::parse_pin(pin));

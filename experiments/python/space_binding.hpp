@@ -15,7 +15,7 @@ namespace affinterp::python {
 /// Interpolation's keywords that carry over to 3D (the others are refused before).
 struct SpaceKeywords {
   std::string homotopy, rotation_branch;
-  bool area_weighted = true;
+  bool area_weighted = true, symmetric = false;
   std::vector<std::string> pins;
   std::string barycentre_locus;
   std::pair<double, double> time_range;

@@ -14,6 +14,21 @@ using global::LocalHomotopy;
 ElementPaths3::ElementPaths3(const std::vector<Matrix3d>& maps, LocalHomotopy homotopy, global::RotationBranch branch,
                              const DualGraph3& graph)
     : homotopy_(homotopy) {
+  const Eigen::Matrix3Xd principal = decompose(maps);
+  use_logs(branch == global::RotationBranch::consistent ? consistent_logs(graph, principal) : principal, principal);
+}
+
+ElementPaths3::ElementPaths3(const std::vector<Matrix3d>& maps, LocalHomotopy homotopy,
+                             const Eigen::Matrix3Xd& reference)
+    : homotopy_(homotopy) {
+  const Eigen::Matrix3Xd principal = decompose(maps);
+  Eigen::Matrix3Xd chosen(3, principal.cols());
+  for (Index i = 0; i < principal.cols(); ++i)
+    chosen.col(i) = local3::nearest_log<double>(principal.col(i), reference.col(i));
+  use_logs(chosen, principal);
+}
+
+Eigen::Matrix3Xd ElementPaths3::decompose(const std::vector<Matrix3d>& maps) {
   const auto m = static_cast<Index>(maps.size());
   Eigen::Matrix3Xd principal(3, m);
   omega_U_.resize(3, m), sigma_.resize(3, m), omega_V_.resize(3, m);
@@ -26,18 +41,22 @@ ElementPaths3::ElementPaths3(const std::vector<Matrix3d>& maps, LocalHomotopy ho
                              const local3::Svd3<double> d = local3::svd3<double>(maps[static_cast<std::size_t>(i)]);
                              principal.col(i) = local3::rotation_log<double>(d.U * d.V.transpose());
                              stretch_[static_cast<std::size_t>(i)] =
-                                 homotopy == LocalHomotopy::exp ? local3::log_stretch(d) : local3::polar3(d).S;
+                                 homotopy_ == LocalHomotopy::exp ? local3::log_stretch(d) : local3::polar3(d).S;
                              omega_U_.col(i) = local3::rotation_log<double>(d.U);
                              sigma_.col(i) = d.sigma;
                              omega_V_.col(i) = local3::rotation_log<double>(d.V.transpose());
                            }
                          });
-  omega_ = branch == global::RotationBranch::consistent ? consistent_logs(graph, principal) : principal;
-  for (Index i = 0; i < m; ++i)
+  if (homotopy_ == LocalHomotopy::linear) A_ = maps;
+  return principal;
+}
+
+void ElementPaths3::use_logs(const Eigen::Matrix3Xd& chosen, const Eigen::Matrix3Xd& principal) {
+  omega_ = chosen;
+  for (Index i = 0; i < omega_.cols(); ++i)
     if (omega_.col(i) != principal.col(i))
       omega_U_.col(i) =
           local3::nearest_log<double>(omega_U_.col(i), omega_U_.col(i) + omega_.col(i) - principal.col(i));
-  if (homotopy == LocalHomotopy::linear) A_ = maps;
 }
 
 void ElementPaths3::maps_at(double t, std::span<Matrix3d> out, std::size_t threads,

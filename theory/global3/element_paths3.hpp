@@ -25,6 +25,11 @@ class ElementPaths3 {
   /// std::invalid_argument if some det A_i ≤ 0.
   ElementPaths3(const std::vector<Eigen::Matrix3d>& maps, global::LocalHomotopy homotopy, global::RotationBranch branch,
                 const DualGraph3& graph);
+  /// The same with each ω_i the representative nearest reference's column i instead of `branch`'s choice: the
+  /// reverse paths of the symmetrised energy take −ω_i of the forward ones (the logarithm of R_iᵀ, whose
+  /// representatives are those of R_i negated), as the 2D engine's reverse paths take −θ_i.
+  ElementPaths3(const std::vector<Eigen::Matrix3d>& maps, global::LocalHomotopy homotopy,
+                const Eigen::Matrix3Xd& reference);
 
   /// out[i] = A_i(t) for every element, on up to `threads` threads; the same bits on any number. `exp`: the
   /// exp-log homotopy's symmetric exponentials (empty: sym3::exp_batched).
@@ -39,6 +44,11 @@ class ElementPaths3 {
   Eigen::Matrix3Xd omega_;                      ///< polar, exp-log (and reported for every homotopy)
   std::vector<Eigen::Matrix3d> stretch_;        ///< polar: S_i; exp-log: log S_i
   Eigen::Matrix3Xd omega_U_, sigma_, omega_V_;  ///< svd
+
+  /// The decompositions; returns the principal logarithms of the R_i.
+  Eigen::Matrix3Xd decompose(const std::vector<Eigen::Matrix3d>& maps);
+  /// ω from the chosen logarithms, and the SVD's ω_U moved along with them.
+  void use_logs(const Eigen::Matrix3Xd& chosen, const Eigen::Matrix3Xd& principal);
 };
 
 }  // namespace affinterp::global3

@@ -8,31 +8,12 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace affinterp::global3 {
-
-struct Interpolation3::Engine {
-  Interpolation3Options options;
-  Eigen::Matrix3Xd source, target;
-  ElementPaths3 paths;
-  PoissonSystem3 system;
-  std::size_t threads;
-
-  Engine(const Mesh3& s, const Mesh3& t, Interpolation3Options o)
-      : options(std::move(o)),
-        source(s.vertices),
-        target(t.vertices),
-        paths(element_maps(s, t), options.homotopy, options.rotation_branch, dual_graph3(s.elements)),
-        system(s, options.area_weighted, options.constraints, options.back_end),
-        threads(frame_threads3(options.frame_threads, s)) {}
-
-  void require_time(double t) const {
-    if (!std::isfinite(t)) throw std::out_of_range("the time must be finite, not " + std::to_string(t));
-  }
-  Eigen::Matrix3Xd frame(double t, std::size_t threads_, FrameTimings* timings) const;
-};
 
 namespace {
 
@@ -43,13 +24,50 @@ const Mesh3& validated(const Mesh3& source, const Mesh3& target) {
   return source;
 }
 
+/// The rest poses E^F's sum runs over: the source, and the target when symmetrised.
+std::vector<const Mesh3*> rest_poses(const Mesh3& source, const Mesh3& target, bool symmetric) {
+  if (symmetric) return {&source, &target};
+  return {&source};
+}
+
 }  // namespace
+
+struct Interpolation3::Engine {
+  Interpolation3Options options;
+  Eigen::Matrix3Xd source, target;
+  ElementPaths3 paths;
+  std::optional<ElementPaths3> reverse;  ///< symmetrised: the paths from the target, I to A_i⁻¹
+  PoissonSystem3 system;
+  std::size_t threads;
+
+  Engine(const Mesh3& s, const Mesh3& t, Interpolation3Options o)
+      : options(std::move(o)),
+        source(s.vertices),
+        target(t.vertices),
+        paths(element_maps(s, t), options.homotopy, options.rotation_branch, dual_graph3(s.elements)),
+        system(rest_poses(s, t, options.symmetric), options.area_weighted, options.constraints, options.back_end),
+        threads(frame_threads3(options.frame_threads, s)) {
+    if (options.symmetric) reverse.emplace(element_maps(t, s), options.homotopy, Eigen::Matrix3Xd(-paths.rotation_logs()));
+  }
+
+  void require_time(double t) const {
+    if (!std::isfinite(t)) throw std::out_of_range("the time must be finite, not " + std::to_string(t));
+  }
+  /// The maps of every term of E (E′): A_i(t), then, symmetrised, Ā_i(1 − t).
+  std::vector<Eigen::Matrix3d> term_maps(double t, std::size_t threads_) const {
+    const auto m = static_cast<std::size_t>(paths.element_count());
+    std::vector<Eigen::Matrix3d> A(reverse ? 2 * m : m);
+    paths.maps_at(t, std::span(A).first(m), threads_, options.exp);
+    if (reverse) reverse->maps_at(1 - t, std::span(A).subspan(m), threads_, options.exp);
+    return A;
+  }
+  Eigen::Matrix3Xd frame(double t, std::size_t threads_, FrameTimings* timings) const;
+};
 
 Eigen::Matrix3Xd Interpolation3::Engine::frame(double t, std::size_t threads_, FrameTimings* timings) const {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  std::vector<Eigen::Matrix3d> A(static_cast<std::size_t>(paths.element_count()));
-  paths.maps_at(t, A, threads_, options.exp);
+  const std::vector<Eigen::Matrix3d> A = term_maps(t, threads_);
   const auto mapped = Clock::now();
   PoissonSystem3::Block b = system.right_hand_side(A, threads_);
   const auto assembled = Clock::now();
@@ -101,7 +119,8 @@ ConstraintTargets3 Interpolation3::targets_at(double t) const {
 
 double Interpolation3::energy_at(double t, const Eigen::Matrix3Xd& v) const {
   if (v.cols() != engine_->system.vertex_count()) throw std::invalid_argument("energy_at: v needs one column a vertex");
-  return engine_->system.energy(local_maps_at(t), v, targets_at(t));
+  engine_->require_time(t);
+  return engine_->system.energy(engine_->term_maps(t, engine_->threads), v, targets_at(t));
 }
 
 const Eigen::Matrix3Xd& Interpolation3::rotation_logs() const { return engine_->paths.rotation_logs(); }

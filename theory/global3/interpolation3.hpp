@@ -13,9 +13,14 @@
 // energy is no longer a quadratic form: no one-solve-per-frame counterpart exists. E^S minimises over the same
 // similarities and fails the same way. The nearest sound 3D counterpart is a local/global (as-rigid-as-possible)
 // refinement of each frame, an iteration of per-element SVDs and solves with this factor (a frame's cost times the
-// iterations); it is not built. The symmetrised E′(t) = E(t) + E^{−1}(1 − t) does carry over for E^F (the reverse
-// problem's B_i is linear in the same vertices through the target's edges, so E′ stays a quadratic form with a
-// matrix constant in t); it is not built yet.
+// iterations); it is not built (on the cat poses it did not help: see the report's 3D quality table).
+//
+// The symmetrised E′(t) = E(t) + E^{−1}(1 − t) (Kaji's "Improvements", the 2D engine's `symmetric`) carries over
+// for E^F: the reverse problem fits the target's elements to their reverse homotopies Ā_i(1 − t) between I and
+// A_i⁻¹ (rotation logarithms −ω_i, element_paths3.hpp), its B̄_i is linear in the same vertices through the target's
+// edges, so E′ is a quadratic form whose matrix (poisson_system3.hpp, two rest poses) is constant in t: one
+// factorisation still serves every frame, and a frame costs two passes of local maps and right-hand side. The
+// constraints' term C counts once. Swapping source and target gives the same frames at 1 − t.
 #include "theory/global/options.hpp"
 #include "theory/global/refused_problem.hpp"
 #include "theory/global3/constraints3.hpp"
@@ -39,6 +44,8 @@ struct Interpolation3Options {
   global::RotationBranch rotation_branch = global::RotationBranch::consistent;
   /// w_i = the source element's area (triangles) or volume (tetrahedra); false: w_i = 1.
   bool area_weighted = true;
+  /// E′(t) = E(t) + E^{−1}(1 − t), the source's and the target's elements both fitted (above).
+  bool symmetric = false;
   /// Pinned vertices move on (1−t)p_k + t q_k, the barycentre on the line between the two barycentres.
   Constraints3 constraints;
   std::optional<global::SparseBackEnd> back_end;  ///< none: chosen by the mesh's size
@@ -71,7 +78,7 @@ class Interpolation3 {
   /// on one thread): the same bits as vertices_at(t) one after another. Throws before computing any frame.
   std::vector<Eigen::Matrix3Xd> vertices_at(const std::vector<double>& times) const;
 
-  /// A_i(t) of every element, the local maps the frame fits (one batched pass).
+  /// A_i(t) of every element, the local maps the frame fits (one batched pass; symmetrised, the forward ones).
   std::vector<Eigen::Matrix3d> local_maps_at(double t) const;
   /// Where the constraints want the vertices at t.
   ConstraintTargets3 targets_at(double t) const;

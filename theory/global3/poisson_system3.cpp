@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -71,29 +72,34 @@ void build_stars(PoissonSystem3::Data& data) {
     }
 }
 
-/// W_i, E_i⁺ and L's triplets (w_i C M_i Cᵀ) of every element.
-std::vector<Eigen::Triplet<double>> element_terms(const Mesh3& rest, PoissonSystem3::Data& data) {
-  const int d = rest.corners() - 1;
+/// W_s, E_s⁺ and L's triplets (w_s C M_s Cᵀ) of every term s = r·m + i, element i of rests[r].
+std::vector<Eigen::Triplet<double>> element_terms(std::span<const Mesh3* const> rests, PoissonSystem3::Data& data) {
+  const Mesh3& first = *rests.front();
+  const Index m = first.element_count();
+  const int d = first.corners() - 1;
   // Fixed-capacity types (no heap allocation per element): d ≤ 3.
   using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4>;
   const Small C = edges_to_corners(d);
+  const auto terms = static_cast<std::size_t>(data.elements.cols());
   std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(static_cast<std::size_t>(rest.element_count() * (d + 1) * (d + 1)));
-  data.W.assign(static_cast<std::size_t>(rest.element_count()), Eigen::Matrix<double, 4, 3>::Zero());
-  data.pinv.assign(data.W.size(), Matrix3d::Zero());
-  data.edges.assign(data.W.size(), Matrix3d::Zero());
-  for (Index i = 0; i < rest.element_count(); ++i) {
-    const Small E = element_edges(rest, i);
-    const Small M = Small(E.transpose() * E).inverse();
-    const Small pinv = M * E.transpose();
-    const double w = data.weights[i];
-    data.pinv[static_cast<std::size_t>(i)].topRows(d) = pinv;
-    data.edges[static_cast<std::size_t>(i)].leftCols(d) = E;
-    data.W[static_cast<std::size_t>(i)].topRows(d + 1) = w * C * pinv;
-    const Small K = w * C * M * C.transpose();
-    for (int a = 0; a <= d; ++a)
-      for (int b = 0; b <= d; ++b) triplets.emplace_back(rest.elements(a, i), rest.elements(b, i), K(a, b));
-  }
+  triplets.reserve(terms * static_cast<std::size_t>((d + 1) * (d + 1)));
+  data.W.assign(terms, Eigen::Matrix<double, 4, 3>::Zero());
+  data.pinv.assign(terms, Matrix3d::Zero());
+  data.edges.assign(terms, Matrix3d::Zero());
+  for (std::size_t r = 0; r < rests.size(); ++r)
+    for (Index i = 0; i < m; ++i) {
+      const Index s = static_cast<Index>(r) * m + i;
+      const Small E = element_edges(*rests[r], i);
+      const Small M = Small(E.transpose() * E).inverse();
+      const Small pinv = M * E.transpose();
+      const double w = data.weights[s];
+      data.pinv[static_cast<std::size_t>(s)].topRows(d) = pinv;
+      data.edges[static_cast<std::size_t>(s)].leftCols(d) = E;
+      data.W[static_cast<std::size_t>(s)].topRows(d + 1) = w * C * pinv;
+      const Small K = w * C * M * C.transpose();
+      for (int a = 0; a <= d; ++a)
+        for (int b = 0; b <= d; ++b) triplets.emplace_back(first.elements(a, i), first.elements(b, i), K(a, b));
+    }
   return triplets;
 }
 
@@ -120,14 +126,23 @@ void factorise_system(PoissonSystem3::Data& data, std::vector<Eigen::Triplet<dou
 
 PoissonSystem3::PoissonSystem3(const Mesh3& rest, bool area_weighted, const Constraints3& constraints,
                                std::optional<global::SparseBackEnd> back_end)
+    : PoissonSystem3(std::array{&rest}, area_weighted, constraints, back_end) {}
+
+PoissonSystem3::PoissonSystem3(std::span<const Mesh3* const> rests, bool area_weighted,
+                               const Constraints3& constraints, std::optional<global::SparseBackEnd> back_end)
     : data_(std::make_unique<Data>()) {
-  require_constraints(constraints, rest.vertex_count());
-  data_->elements = rest.elements;
-  data_->n = rest.vertex_count();
+  const Mesh3& first = *rests.front();
+  const Index m = first.element_count(), terms = m * static_cast<Index>(rests.size());
+  require_constraints(constraints, first.vertex_count());
+  data_->elements = first.elements.replicate(1, static_cast<Index>(rests.size()));
+  data_->n = first.vertex_count();
   data_->constraints = constraints;
-  data_->weights = area_weighted ? element_measures(rest) : Eigen::VectorXd::Ones(rest.element_count());
+  data_->weights = Eigen::VectorXd::Ones(terms);
+  if (area_weighted)
+    for (std::size_t r = 0; r < rests.size(); ++r)
+      data_->weights.segment(static_cast<Index>(r) * m, m) = element_measures(*rests[r]);
   build_stars(*data_);
-  factorise_system(*data_, element_terms(rest, *data_), back_end);
+  factorise_system(*data_, element_terms(rests, *data_), back_end);
 }
 
 PoissonSystem3::~PoissonSystem3() = default;

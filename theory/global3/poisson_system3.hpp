@@ -14,6 +14,9 @@
 // Normal equations: L V = Σ_i W_i A_iᵀ scattered to the corners, with V the n × 3 vertices, L = Σ_i w_i C M_i Cᵀ,
 // M_i = (E_iᵀE_i)⁻¹, W_i = w_i C E_i⁺ and C the (d+1) × d map from edges to corners (row 0 all −1, then I). L
 // depends on the rest mesh only: factored once, the three coordinates solved together in one block.
+// Symmetrised (E′(t) = E(t) + E^{−1}(1 − t), interpolation3.hpp): the same sum over a second rest pose of the
+// same elements, the target, whose edges E_i and weights w_i are the target's; L is the sum of both, still
+// constant in t, and term r·m + i (r = 0 source, 1 target) takes its own map.
 // Constraints: pins add c on L's diagonal; the barycentre term is a rank-one dense matrix (c_o/n²) 11ᵀ, handled
 // by Sherman–Morrison on top of the pinned factor, or, without pins, as the gauge: L's kernel is the translations
 // (a connected mesh) and Σ_i W_i A_iᵀ ⟂ 1, so the minimiser is any solution of L V = b (computed with vertex 0
@@ -40,11 +43,15 @@ class PoissonSystem3 {
   /// positive and finite, no constraint fixing the translation, or a system the factorisation finds singular.
   PoissonSystem3(const Mesh3& rest, bool area_weighted, const Constraints3& constraints,
                  std::optional<global::SparseBackEnd> back_end);
+  /// The sum over several rest poses of the same elements (the symmetrised energy: source and target): term
+  /// r·m + i fits element i of rests[r], and right_hand_side and energy take one map per term.
+  PoissonSystem3(std::span<const Mesh3* const> rests, bool area_weighted, const Constraints3& constraints,
+                 std::optional<global::SparseBackEnd> back_end);
   ~PoissonSystem3();
   PoissonSystem3(PoissonSystem3&&) noexcept;
   PoissonSystem3& operator=(PoissonSystem3&&) noexcept;
 
-  /// b = Σ_i W_i A_iᵀ (n × 3), one A_i per element; summed per vertex over its star in a fixed order, so the
+  /// b = Σ_i W_i A_iᵀ (n × 3), one A_i per term (element of each rest pose); summed per vertex over its star in a fixed order, so the
   /// same bits on any number of threads.
   Block right_hand_side(std::span<const Eigen::Matrix3d> A, std::size_t threads) const;
   /// The minimiser v (3 × n) for the right-hand side b and the constraints' targets. Const and safe to call
@@ -54,7 +61,7 @@ class PoissonSystem3 {
   double energy(std::span<const Eigen::Matrix3d> A, const Eigen::Matrix3Xd& v, const ConstraintTargets3& targets) const;
 
   Eigen::Index vertex_count() const;
-  /// w_i: the rest element's area or volume (area_weighted), else 1.
+  /// w_i: the rest element's area or volume (area_weighted), else 1; one per term.
   const Eigen::VectorXd& weights() const;
   const Constraints3& constraints() const;
   global::SparseBackEnd back_end() const;

@@ -38,6 +38,7 @@ global3::Interpolation3Options engine_options3(const io::InterpolationRequest& r
   options.homotopy = request.options.homotopy;
   options.rotation_branch = request.options.rotation_branch;
   options.area_weighted = request.options.area_weighted;
+  options.symmetric = request.options.symmetric;
   options.constraints.barycentre = barycentre_line(request.barycentre_locus);
   try {
     for (const std::string& pin : request.pins) options.constraints.pinned.push_back(io::parse_pin(pin));
@@ -105,7 +106,7 @@ void refuse_planar_only_options(const CLI::App& command, const io::Interpolation
                             ": 3D meshes take E^F only (E^R's closed form rests on the plane's complex numbers)",
                         usage_error);
   for (const char* option :
-       {"--blend-weight", "--blend-weights", "--symmetric", "--locus", "--edge-direction", "--allow-flipped-target"})
+       {"--blend-weight", "--blend-weights", "--locus", "--edge-direction", "--allow-flipped-target"})
     if (command.count(option) > 0)
       throw CommandFailed(std::string(option) + ": a 2D option, not available for 3D meshes", usage_error);
 }
