@@ -90,6 +90,10 @@ echo "==> recording the run in reports/bench/history"
 "$root/build/bin/affinterp" bench record --bench-dir "$bench_dir" \
   --note "${AFFINTERP_BENCH_NOTE:-main job (experiments/reproduce.sh): $processes interleaved processes per speed program}"
 
+# Not a timing: the 3D engine's frames against baselines (inverted elements, distortion) on the pose pairs here.
+echo "==> the 3D frames against baselines (quality_3d)"
+"$root/build/bin/quality_3d" --out "$bench_dir/quality_3d.json"
+
 echo "==> deciding the claims (full size)"
 "$cli" claims --size full --out "$root/reports" ${args[@]+"${args[@]}"}
 echo "==> report: $root/reports/REPORT.md"

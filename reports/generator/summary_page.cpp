@@ -1,11 +1,13 @@
 #include "reports/generator/summary_page.hpp"
 
+#include "experiments/measurements/engine3_quality.hpp"
 #include "experiments/measurements/engine3_speed.hpp"
 #include "reports/generator/claim_lines.hpp"
 #include "reports/generator/engine_sections.hpp"
 #include "reports/generator/legend.hpp"
 #include "reports/generator/markdown.hpp"
 
+#include <algorithm>
 #include <map>
 #include <sstream>
 #include <vector>
@@ -118,6 +120,38 @@ void write_engine3_speed(std::ostringstream& md, const std::optional<measurement
   md << "\n";
 }
 
+/// The 3D engine's frames against baselines (quality_3d): per method and pose pair, the most elements inverted in a
+/// frame, and the middle frame's mean distortion.
+void write_engine3_quality(std::ostringstream& md, const std::optional<measurements::Engine3Quality>& quality) {
+  if (!quality) return;
+  md << "### 3D frames against baselines\n\n"
+        "quality_3d at "
+     << quality->frames
+     << " frames per pair (t = 0 … 1), the same numbers on every run: the most elements inverted in one frame "
+        "(the first such frame's t), counted against the exp-log local maps A_i(t) on consistent branches for every "
+        "method (a triangle whose normal opposes A_i(t) n_p), then the mean distortion σ1/σ2 of the frame at "
+        "t = 1/2. E^F with the linear homotopy is the per-vertex linear blend exactly (the maps (1 − t)I + tA_i are "
+        "fitted exactly by (1 − t)P + tQ). The cat poses are Sumner and Popović's (SIGGRAPH 2004). "
+        "Measurements, not claims.\n\n| method |";
+  for (std::size_t p = 0; p < quality->pairs.size(); ++p)
+    md << " " << quality->pairs[p] << " (" << quality->elements[p] << ") |";
+  md << " most in any pair |\n|---|";
+  for (std::size_t p = 0; p <= quality->pairs.size(); ++p) md << "---|";
+  md << "\n";
+  for (std::size_t m = 0; m < quality->methods.size(); ++m) {
+    md << "| " << cell(quality->methods[m]) << " |";
+    long most = 0;
+    for (const auto& c : quality->cells[m]) {
+      most = std::max(most, c.most_inverted);
+      md << " " << c.most_inverted;
+      if (c.most_inverted > 0) md << " (t = " << fixed(c.at_t, 2) << ")";
+      md << ", " << fixed(c.middle_distortion, 2) << " |";
+    }
+    md << " " << most << " |\n";
+  }
+  md << "\n";
+}
+
 void write_environment(std::ostringstream& md, const json& doc) {
   md << "## How to reproduce\n\n"
         "From a fresh clone on Debian, `bash experiments/reproduce.sh` installs what is missing, builds, "
@@ -140,6 +174,7 @@ std::string render_summary_page(const json& doc) {
   const auto scale = record<measurements::EngineScale>(doc, "engine_scale");
   const auto cli = record<measurements::EngineCli>(doc, "engine_cli");
   const auto engine3 = record<measurements::Engine3Speed>(doc, "engine3_speed");
+  const auto quality3 = record<measurements::Engine3Quality>(doc, "engine3_quality");
   std::ostringstream md;
   md << "# affinterp report\n\n"
      << "Which claims of Kaji et al., *Mathematical Analysis on Affine Maps for 2D Shape Interpolation* "
@@ -151,6 +186,7 @@ std::string render_summary_page(const json& doc) {
   write_areas(md, claims);
   write_engine_area(md, speed, scale, cli);
   write_engine3_speed(md, engine3);
+  write_engine3_quality(md, quality3);
   write_verdict_legend(md);
   write_strength_legend(md, claims);
   write_engine_speed(md, speed);

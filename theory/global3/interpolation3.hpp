@@ -13,7 +13,7 @@
 // energy is no longer a quadratic form: no one-solve-per-frame counterpart exists. E^S minimises over the same
 // similarities and fails the same way. The nearest sound 3D counterpart is a local/global (as-rigid-as-possible)
 // refinement of each frame, an iteration of per-element SVDs and solves with this factor (a frame's cost times the
-// iterations); it is not built (on the cat poses it did not help: see the report's 3D quality table).
+// iterations); it is not built.
 //
 // The symmetrised E′(t) = E(t) + E^{−1}(1 − t) (Kaji's "Improvements", the 2D engine's `symmetric`) carries over
 // for E^F: the reverse problem fits the target's elements to their reverse homotopies Ā_i(1 − t) between I and

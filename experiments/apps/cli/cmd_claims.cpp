@@ -4,6 +4,7 @@
 #include "experiments/claims/claims_json.hpp"
 #include "experiments/claims/registry.hpp"
 #include "experiments/claims/runner.hpp"
+#include "experiments/measurements/engine3_quality.hpp"
 #include "experiments/measurements/engine3_speed.hpp"
 #include "experiments/measurements/engine_cli.hpp"
 #include "experiments/measurements/engine_scale.hpp"
@@ -61,7 +62,8 @@ nlohmann::json record_json(const std::optional<Record>& record) {
   return record ? nlohmann::json(*record) : nlohmann::json();
 }
 
-/// The global engine's speed (the latest run, and every recorded run) and scale, from the benchmark folder.
+/// The global engine's speed (the latest run, and every recorded run) and scale, the 3D engine's speed and its
+/// frames against baselines, from the benchmark folder.
 EngineTables engine_tables(const RunContext& context) {
   using namespace affinterp::measurements;
   try {
@@ -69,7 +71,8 @@ EngineTables engine_tables(const RunContext& context) {
     if (speed) speed->history = engine_speed_history(bench::runs_of(context.bench_dir));
     return {record_json(speed), record_json(engine_scale(context.bench_dir / "bench_scale.json", context)),
             record_json(engine_cli(context.bench_dir / "bench_cli_scale.json")),
-            record_json(engine3_speed(context.bench_dir / "bench_3d.json"))};
+            record_json(engine3_speed(context.bench_dir / "bench_3d.json")),
+            record_json(read_engine3_quality(context.bench_dir / "quality_3d.json"))};
   } catch (const std::runtime_error& e) {
     throw CommandFailed(std::string("benchmark outputs: ") + e.what(), 1);
   }

@@ -1,0 +1,138 @@
+#include "experiments/measurements/engine3_quality.hpp"
+
+#include "theory/deformation/deformation.hpp"
+#include "theory/global3/frame_metrics3.hpp"
+#include "theory/global3/interpolation3.hpp"
+#include "theory/sym3/algorithms.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <stdexcept>
+
+namespace affinterp::measurements {
+
+namespace {
+
+using global::LocalHomotopy;
+using global3::Interpolation3;
+using global3::Interpolation3Options;
+using global3::Mesh3;
+
+/// A way of making frames: the frames of one pair at the given times.
+struct Method {
+  std::string name;
+  std::function<std::vector<Eigen::Matrix3Xd>(const PosePair&, const std::vector<double>&)> frames;
+};
+
+Method engine_method(std::string name, LocalHomotopy homotopy, global::RotationBranch branch, bool symmetric) {
+  return {std::move(name), [=](const PosePair& pair, const std::vector<double>& times) {
+            Interpolation3Options options;
+            options.homotopy = homotopy, options.rotation_branch = branch, options.symmetric = symmetric;
+            return Interpolation3(pair.source, pair.target, options).vertices_at(times);
+          }};
+}
+
+std::vector<Method> methods() {
+  using global::RotationBranch;
+  std::vector<Method> all{
+      {"per-vertex linear blend",
+       [](const PosePair& pair, const std::vector<double>& times) {
+         std::vector<Eigen::Matrix3Xd> frames;
+         for (double t : times) frames.push_back((1 - t) * pair.source.vertices + t * pair.target.vertices);
+         return frames;
+       }},
+      {"stand-in (theory/deformation)",
+       [](const PosePair& pair, const std::vector<double>& times) {
+         const auto surface = [](const Mesh3& m) { return sym3::Mesh3{m.vertices, m.elements}; };
+         sym3::Deformation3 deformation(surface(pair.source), surface(pair.target));
+         std::vector<Eigen::Matrix3Xd> frames;
+         for (double t : times) frames.push_back(deformation.interpolate(t, sym3::exp_batched));
+         return frames;
+       }},
+  };
+  for (auto [name, homotopy] : {std::pair{"E^F, linear", LocalHomotopy::linear}, {"E^F, polar", LocalHomotopy::polar},
+                                {"E^F, SVD", LocalHomotopy::svd}})
+    all.push_back(engine_method(name, homotopy, RotationBranch::consistent, false));
+  all.push_back(engine_method("E^F, exp-log, principal branch", LocalHomotopy::exp, RotationBranch::principal, false));
+  all.push_back(engine_method("E^F, exp-log", LocalHomotopy::exp, RotationBranch::consistent, false));
+  all.push_back(engine_method("E^F, exp-log, symmetrised", LocalHomotopy::exp, RotationBranch::consistent, true));
+  return all;
+}
+
+Engine3QualityCell measured(const PosePair& pair, const std::vector<Eigen::Matrix3Xd>& frames,
+                            const std::vector<double>& times, const Interpolation3& reference) {
+  Engine3QualityCell cell;
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    const global3::FrameMetrics3 metrics =
+        global3::frame_metrics3(pair.source, frames[f], reference.local_maps_at(times[f]));
+    if (metrics.inverted_elements > cell.most_inverted)
+      cell.most_inverted = metrics.inverted_elements, cell.at_t = times[f];
+    if (f == frames.size() / 2) cell.middle_distortion = metrics.mean_distortion;
+  }
+  return cell;
+}
+
+}  // namespace
+
+Engine3Quality engine3_quality(const std::vector<PosePair>& pairs, int frames,
+                               const std::function<void(const std::string&)>& progress) {
+  if (frames < 2) throw std::invalid_argument("engine3_quality: at least two frames");
+  std::vector<double> times;
+  for (int f = 0; f < frames; ++f) times.push_back(static_cast<double>(f) / (frames - 1));
+  const std::vector<Method> all = methods();
+  Engine3Quality quality;
+  quality.frames = frames;
+  for (const Method& method : all) quality.methods.push_back(method.name);
+  quality.cells.assign(all.size(), {});
+  for (const PosePair& pair : pairs) {
+    if (progress) progress(pair.name);
+    quality.pairs.push_back(pair.name);
+    quality.elements.push_back(static_cast<long>(pair.source.element_count()));
+    const Interpolation3 reference(pair.source, pair.target);
+    for (std::size_t m = 0; m < all.size(); ++m)
+      quality.cells[m].push_back(measured(pair, all[m].frames(pair, times), times, reference));
+  }
+  return quality;
+}
+
+std::optional<Engine3Quality> read_engine3_quality(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) return std::nullopt;
+  nlohmann::json json;
+  try {
+    in >> json;
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(file.string() + ": " + e.what());
+  }
+  return json.get<Engine3Quality>();
+}
+
+void to_json(nlohmann::json& json, const Engine3Quality& quality) {
+  json = {{"frames", quality.frames},
+          {"pairs", quality.pairs},
+          {"elements", quality.elements},
+          {"methods", quality.methods},
+          {"cells", nlohmann::json::array()}};
+  for (const auto& row : quality.cells) {
+    nlohmann::json cells = nlohmann::json::array();
+    for (const Engine3QualityCell& c : row)
+      cells.push_back(
+          {{"most_inverted", c.most_inverted}, {"at_t", c.at_t}, {"middle_distortion", c.middle_distortion}});
+    json["cells"].push_back(cells);
+  }
+}
+
+void from_json(const nlohmann::json& json, Engine3Quality& quality) {
+  quality.frames = json.at("frames");
+  quality.pairs = json.at("pairs").get<std::vector<std::string>>();
+  quality.elements = json.at("elements").get<std::vector<long>>();
+  quality.methods = json.at("methods").get<std::vector<std::string>>();
+  quality.cells.clear();
+  for (const auto& row : json.at("cells")) {
+    quality.cells.emplace_back();
+    for (const auto& c : row)
+      quality.cells.back().push_back({c.at("most_inverted"), c.at("at_t"), c.at("middle_distortion")});
+  }
+}
+
+}  // namespace affinterp::measurements
