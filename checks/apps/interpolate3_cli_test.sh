@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # `affinterp interpolate` on 3D meshes and `affinterp blend` end to end, on small generated meshes
-# (meshes3_files.py: a tetrahedral bar in MEDIT .mesh, a tube surface in OFF): frames written, the end frames
-# equal to source and target, a blend at e_k equal to pose k, metrics.json per frame; each kind of bad input a
-# one-line error, a non-zero exit and OUT as it was. On the cat poses of Sumner and Popovic 2004 (when present),
-# cat-0 -> cat-4 with exp-log, 11 frames as frames.npy: the inverted triangles per frame are printed, not asserted
-# (the 3D engine's own test, checks/global3/cat3_test.cpp, asserts its bound).
+# (meshes3_files.py: a tetrahedral bar in MEDIT .mesh, a tube surface in OFF) and on `affinterp shapes`' 3D pose
+# sets: frames written, the end frames equal to source and target, a blend at e_k equal to pose k, metrics.json per
+# frame; each kind of bad input a one-line error, a non-zero exit and OUT as it was. On the cat poses of Sumner and
+# Popovic 2004 (when present), cat-0 -> cat-4 with exp-log, 11 frames as frames.npy: the inverted triangles per
+# frame are printed, not asserted (the 3D engine's own test, checks/global3/cat3_test.cpp, asserts its bound).
 # Usage: interpolate3_cli_test.sh path/to/affinterp SOURCE_DIR
 set -u
 affinterp=$(realpath "$1")
@@ -98,6 +98,22 @@ expect_equal blend-run/frame_0001.mesh bar170.mesh "blend at e_2"
 [ "$(frame_count keys-run)" = 4 ] || fail "keys: 4 frames"
 expect_equal keys-run/frame_0002.obj tube1.off "keys at t = 0.5"
 "$affinterp" blend --help | grep -q -- "--allow-extrapolation" || fail "blend --help"
+
+# shapes: every 3D pose set written, its first two poses interpolated (the ends are the poses), all of them blended.
+for shape in $("$affinterp" shapes --list | grep -P '\t3D: ' | cut -f1); do
+  "$affinterp" shapes "$shape" --out "shape-$shape" 2>err || { fail "shapes $shape: $(cat err)"; continue; }
+  mapfile -t poses < <(ls "shape-$shape"/pose-*)
+  ext=${poses[0]##*.}
+  "$affinterp" interpolate --source "${poses[0]}" --target "${poses[1]}" --frames 3 --no-figures \
+    --out "shape-$shape/run" 2>err || fail "interpolate $shape: $(cat err)"
+  expect_equal "shape-$shape/run/frame_0002.$ext" "${poses[1]}" "$shape: last frame"
+  if [ "${#poses[@]}" -gt 2 ]; then
+    weights=$(python3 -c "print(','.join(['0'] * (${#poses[@]} - 1) + ['1']))")
+    "$affinterp" blend --poses "${poses[@]}" --weights "$weights" --no-figures --out "shape-$shape/blend" 2>err ||
+      fail "blend $shape: $(cat err)"
+    expect_equal "shape-$shape/blend/frame_0000.$ext" "${poses[-1]}" "$shape: blend at the last pose"
+  fi
+done
 
 # Bad input: one line on standard error, a non-zero exit, OUT untouched.
 mkdir kept && echo earlier >kept/earlier.txt
