@@ -117,7 +117,7 @@ nlohmann::json claims_document(const ClaimRegistry& registry, const std::vector<
       {"environment", environment},   {"claims", claims},
       {"engine_speed", engine.speed}, {"engine_scale", engine.scale},
       {"engine_cli", engine.cli},     {"engine3_speed", engine.engine3},
-      {"engine3_quality", engine.engine3_quality},
+      {"engine3_scale", engine.engine3_scale},   {"engine3_quality", engine.engine3_quality},
   };
 }
 

@@ -16,7 +16,7 @@ nlohmann::json to_json(const ClaimResult& result);
 /// The global engine's tables as the run measured them: experiments/measurements/'s EngineSpeed, EngineScale and
 /// EngineCli as JSON (null: not measured).
 struct EngineTables {
-  nlohmann::json speed, scale, cli, engine3, engine3_quality;
+  nlohmann::json speed, scale, cli, engine3, engine3_scale, engine3_quality;
 };
 
 /// The whole document, one entry per claim of `registry` in run order, and the engine's tables. When `previous`

@@ -1,6 +1,7 @@
 #include "reports/generator/summary_page.hpp"
 
 #include "experiments/measurements/engine3_quality.hpp"
+#include "experiments/measurements/engine3_scale.hpp"
 #include "experiments/measurements/engine3_speed.hpp"
 #include "reports/generator/claim_lines.hpp"
 #include "reports/generator/engine_sections.hpp"
@@ -120,6 +121,26 @@ void write_engine3_speed(std::ostringstream& md, const std::optional<measurement
   md << "\n";
 }
 
+/// The 3D engine at a million triangles (bench_3d_scale, --scale only): each target with its median, spread and
+/// verdict.
+void write_engine3_scale(std::ostringstream& md, const std::optional<measurements::Engine3Scale>& scale) {
+  if (!scale) return;
+  const auto target = [&](const char* what, const measurements::Engine3Target& t, const char* unit, int digits) {
+    md << "| " << what << " | " << fixed(t.median, digits) << " | " << fixed(t.range.lo, digits) << " – "
+       << fixed(t.range.hi, digits) << " | ≤ " << fixed(t.limit, digits) << " " << unit << " | "
+       << met_cell(t.verdict) << " |\n";
+  };
+  md << "At a million triangles: bench_3d_scale on CGAL's elephant subdivided four times, "
+     << fixed(scale->triangles, 0) << " triangles, towards its twist (" << measured_on(scale->run)
+     << "; `reproduce.sh --scale`), the set-up and a frame on two threads in wall time, peak resident memory. A target "
+        "is met when every repetition meets it, missed when none does.\n\n"
+        "| cost | median | least – largest | target | met |\n|---|---|---|---|---|\n";
+  target("set-up (s)", scale->setup_s, "s", 2);
+  target("frame, two threads (ms)", scale->frame_ms, "ms", 0);
+  target("peak memory (MB)", scale->peak_MB, "MB", 0);
+  md << "\n";
+}
+
 /// The 3D engine's frames against baselines (quality_3d): per method and pose pair, the most elements inverted in a
 /// frame, and the middle frame's mean distortion.
 void write_engine3_quality(std::ostringstream& md, const std::optional<measurements::Engine3Quality>& quality) {
@@ -175,6 +196,7 @@ std::string render_summary_page(const json& doc) {
   const auto cli = record<measurements::EngineCli>(doc, "engine_cli");
   const auto engine3 = record<measurements::Engine3Speed>(doc, "engine3_speed");
   const auto quality3 = record<measurements::Engine3Quality>(doc, "engine3_quality");
+  const auto scale3 = record<measurements::Engine3Scale>(doc, "engine3_scale");
   std::ostringstream md;
   md << "# affinterp report\n\n"
      << "Which claims of Kaji et al., *Mathematical Analysis on Affine Maps for 2D Shape Interpolation* "
@@ -186,6 +208,7 @@ std::string render_summary_page(const json& doc) {
   write_areas(md, claims);
   write_engine_area(md, speed, scale, cli);
   write_engine3_speed(md, engine3);
+  write_engine3_scale(md, scale3);
   write_engine3_quality(md, quality3);
   write_verdict_legend(md);
   write_strength_legend(md, claims);

@@ -5,6 +5,7 @@
 #include "experiments/claims/registry.hpp"
 #include "experiments/claims/runner.hpp"
 #include "experiments/measurements/engine3_quality.hpp"
+#include "experiments/measurements/engine3_scale.hpp"
 #include "experiments/measurements/engine3_speed.hpp"
 #include "experiments/measurements/engine_cli.hpp"
 #include "experiments/measurements/engine_scale.hpp"
@@ -72,6 +73,7 @@ EngineTables engine_tables(const RunContext& context) {
     return {record_json(speed), record_json(engine_scale(context.bench_dir / "bench_scale.json", context)),
             record_json(engine_cli(context.bench_dir / "bench_cli_scale.json")),
             record_json(engine3_speed(context.bench_dir / "bench_3d.json")),
+            record_json(engine3_scale(context.bench_dir / "bench_3d_scale.json")),
             record_json(read_engine3_quality(context.bench_dir / "quality_3d.json"))};
   } catch (const std::runtime_error& e) {
     throw CommandFailed(std::string("benchmark outputs: ") + e.what(), 1);
