@@ -54,6 +54,15 @@ expect_equal bar-run/frame_0004.mesh bar90.mesh "bar frame 4"
   2>err || fail "bar --symmetric: $(cat err)"
 expect_equal bar-symmetric/frame_0000.mesh bar.mesh "bar --symmetric frame 0"
 expect_equal bar-symmetric/frame_0002.mesh bar90.mesh "bar --symmetric frame 2"
+# a vertex locus of large weight: vertex 0 follows the line through its points, (0,0,0) at t = 0.5
+"$affinterp" interpolate --source bar.mesh --target bar90.mesh --out bar-locus --times 0.5 --no-figures \
+  --locus "0@1e8:-1,-1,-1;1,1,1" --barycentre-locus "0,0,0;1,0,0" 2>err || fail "bar --locus: $(cat err)"
+python3 - bar-locus/frame_0000.mesh <<'PY' || fail "bar --locus: vertex 0 not at (0, 0, 0) at t = 0.5"
+import sys
+lines = open(sys.argv[1]).read().split("\n")
+first = lines[lines.index("Vertices") + 2].split()
+assert max(abs(float(x)) for x in first[:3]) < 1e-6, first
+PY
 python3 -c "
 import json; f = json.load(open('bar-run/metrics.json'))['frames'][2]
 assert all(k in f for k in ('t', 'energy', 'measure_ratio', 'max_distortion', 'inverted_elements')), f" ||
@@ -134,7 +143,9 @@ refused "NaN on a surface" interpolate --source tube.off --target tube-nan.off
 refused "disconnected" interpolate --source bar-split.mesh --target bar-split.mesh
 refused "mixed triangles and tetrahedra" interpolate --source tube.off --target bar.mesh
 refused "2D-only energy" interpolate --source bar.mesh --target bar90.mesh --energy R
-refused "2D-only locus" interpolate --source bar.mesh --target bar90.mesh --locus "0:1,2;3,4"
+refused "2D locus points in 3D" interpolate --source bar.mesh --target bar90.mesh --locus "0:1,2;3,4"
+refused "locus vertex out of range" interpolate --source bar.mesh --target bar90.mesh --locus "999:0,0,0;1,1,1"
+refused "2D-only edge direction" interpolate --source bar.mesh --target bar90.mesh --edge-direction 0:1
 refused "pin out of range" interpolate --source bar.mesh --target bar90.mesh --pin 999
 refused "wrong weight count" blend --poses bar.mesh bar90.mesh bar170.mesh --weights 0.5,0.5
 refused "off the simplex" blend --poses bar.mesh bar90.mesh bar170.mesh --weights 0.5,0.5,0 --weights -1,2,0

@@ -274,7 +274,8 @@ TEST(InterpolateCli, RefusesBadInputsLeavingOutUntouched) {
   };
   expect_refused(pair("s.obj", "missing.obj"), 1, "missing.obj: no such file");
   // a target out of the plane makes a 3D pair (interpolate3_cli_test.sh), which takes no 2D-only option
-  expect_refused(pair("s.obj", "z.obj") + " --symmetric", 2, "--symmetric: a 2D option, not available for 3D meshes");
+  expect_refused(pair("s.obj", "z.obj") + " --edge-direction 0:1", 2,
+                 "--edge-direction: a 2D option, not available for 3D meshes");
   expect_refused(pair("quad.obj", "quad.obj"), 1, "quad.obj:5: face with 4 vertices");
   expect_refused(pair("s.obj", "fewer.obj"), 1, "fewer.obj: the target has 3 vertices, the source 4");
   expect_refused(pair("s.obj", "faces.obj"), 1, "faces.obj: triangle 1 differs");

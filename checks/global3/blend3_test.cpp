@@ -112,6 +112,9 @@ TEST(Blend3, RefusesWeightsOfWrongCountNonFiniteOrOffTheSimplex) {
   EXPECT_TRUE(extrapolating.vertices_at(Eigen::Vector3d(1.5, -0.25, -0.25)).allFinite());
   EXPECT_THROW(extrapolating.vertices_at(Eigen::Vector3d(INFINITY, 0, 0)), RefusedProblem);
   EXPECT_THROW(Blend3(std::vector<Mesh3>{poses[0]}), RefusedProblem);
+  Blend3Options locus;  // a locus is a curve in time, which a blend has not
+  locus.constraints.loci.push_back({0, Eigen::Matrix3Xd::Zero(3, 2), 1.0});
+  EXPECT_THROW(Blend3(poses, locus), RefusedProblem);
 }
 
 TEST(Blend3, BatchIsOneAtATime) {

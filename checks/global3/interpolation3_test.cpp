@@ -3,6 +3,8 @@
 // bar, and batch frames against frames one at a time.
 #include "theory/global3/interpolation3.hpp"
 #include "checks/global3/meshes3.hpp"
+#include "theory/global/locus.hpp"
+#include "theory/global/refused_problem.hpp"
 #include "theory/global3/frame_metrics3.hpp"
 #include "theory/global3/local_maps3.hpp"
 #include "theory/local3/local3.hpp"
@@ -33,6 +35,17 @@ Constraints3 pins(std::vector<affinterp::global::PinnedVertex> pinned, bool bary
   Constraints3 c;
   c.pinned = std::move(pinned);
   if (!barycentre) c.barycentre.reset();
+  return c;
+}
+
+/// A locus of `vertex` through three points, and a barycentre through two (its locus, not its line).
+Constraints3 with_loci(Eigen::Index vertex, double weight) {
+  Constraints3 c;
+  Eigen::Matrix3Xd points(3, 3), barycentre(3, 2);
+  points << 0, 1, 3, 0.5, 2, 1, -1, 0, 2;
+  barycentre << 0, 1, 0.5, 0.2, 0, -0.3;
+  c.loci.push_back({vertex, points, weight});
+  c.barycentre->points = barycentre;
   return c;
 }
 
@@ -99,12 +112,13 @@ Eigen::Matrix3Xd dense_minimiser(const std::vector<const Mesh3*>& rests, const s
         rhs.push_back(std::sqrt(w[s]) * target(r, col));
       }
   }
-  for (std::size_t j = 0; j < constraints.pinned.size(); ++j)
+  const std::vector<affinterp::global::PinnedVertex> terms = vertex_terms(constraints);  // pins, then loci
+  for (std::size_t j = 0; j < terms.size(); ++j)
     for (int r = 0; r < 3; ++r) {
       Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(3 * n);
-      row[3 * constraints.pinned[j].vertex + r] = std::sqrt(constraints.pinned[j].weight);
+      row[3 * terms[j].vertex + r] = std::sqrt(terms[j].weight);
       rows.push_back(row);
-      rhs.push_back(std::sqrt(constraints.pinned[j].weight) * targets.pinned(r, static_cast<Eigen::Index>(j)));
+      rhs.push_back(std::sqrt(terms[j].weight) * targets.vertices(r, static_cast<Eigen::Index>(j)));
     }
   if (constraints.barycentre)
     for (int r = 0; r < 3; ++r) {
@@ -124,7 +138,8 @@ Eigen::Matrix3Xd dense_minimiser(const std::vector<const Mesh3*>& rests, const s
 TEST(Interpolation3, IsTheDenseLeastSquaresMinimiser) {
   const std::vector<Constraints3> constraint_sets{pins({}, true),  // the barycentre's line alone
                                                   pins({pin(0, 2.0), pin(5, 0.5)}, true),  // pins and the barycentre
-                                                  pins({pin(3, 1.0)}, false)};             // a pin alone
+                                                  pins({pin(3, 1.0)}, false),              // a pin alone
+                                                  with_loci(4, 2.0)};  // a vertex locus, the barycentre's spline
   const Mesh3 bar = meshes3::tetrahedral_bar(2, 2), tube = meshes3::triangle_tube(2, 5, 2);
   for (const Pair& pair : {Pair{"bar", bar, meshes3::bent(meshes3::twisted(bar, 1.5, 2), 2)},
                            Pair{"tube", tube, meshes3::bent(meshes3::twisted(tube, 1.5, 2), 2)}})
@@ -141,6 +156,31 @@ TEST(Interpolation3, IsTheDenseLeastSquaresMinimiser) {
           EXPECT_LE(engine.energy_at(t, v), engine.energy_at(t, reference) * (1 + 1e-12) + 1e-14) << pair.name;
         }
       }
+}
+
+// A vertex locus of large weight is followed: v_k(t) is its B-spline (global/locus.hpp) through the points at
+// t = 0, 1/2, 1 to within c⁻¹ of the frame's size; a locus refused with one line: one point, a NaN, no such vertex.
+TEST(Interpolation3, AVertexLocusOfLargeWeightIsFollowed) {
+  const Mesh3 tube = meshes3::triangle_tube(4, 8, 4);
+  const Mesh3 target = meshes3::bent(meshes3::twisted(tube, 1.5, 4), 4);
+  Constraints3 c = with_loci(5, 1e8);
+  c.loci[0].points.col(0) = tube.vertices.col(5);  // starting where the vertex is
+  const Interpolation3 engine(tube, target, options([&](auto& o) { o.constraints = c; }));
+  const affinterp::global::Locus3 u(c.loci[0].points);
+  for (double t : {0.0, 0.25, 0.5, 0.8})
+    EXPECT_LT((engine.vertices_at(t).col(5) - u.at(t)).norm(), 1e-6) << "t = " << t;
+  for (auto [points, what] : {std::pair{Eigen::Matrix3Xd(Eigen::Matrix3Xd::Zero(3, 1)), "two points"},
+                              std::pair{Eigen::Matrix3Xd(Eigen::Matrix3Xd::Constant(3, 2, NAN)), "not finite"}}) {
+    Constraints3 bad = c;
+    bad.loci[0].points = points;
+    EXPECT_THROW(Interpolation3(tube, target, options([&](auto& o) { o.constraints = bad; })),
+                 affinterp::global::RefusedProblem)
+        << what;
+  }
+  Constraints3 out_of_range = c;
+  out_of_range.loci[0].vertex = tube.vertex_count();
+  EXPECT_THROW(Interpolation3(tube, target, options([&](auto& o) { o.constraints = out_of_range; })),
+               affinterp::global::RefusedProblem);
 }
 
 // Symmetrised, E′(t) = E(t) + E^{−1}(1 − t) is the dense minimiser of both sums, the reverse terms fitting the

@@ -92,6 +92,13 @@ def test_interpolation_matches_the_cli(tmp_path):
                                   affinterp.Interpolation(V, W, T, symmetric=True).frames([0, 0.5, 1]))
 
 
+def test_a_vertex_locus_of_large_weight_is_followed():
+    V, T = bar()
+    W = twisted(V, 1.0)
+    interpolation = affinterp.Interpolation(V, W, T, loci=["3@1e8:0,0,0;1,2,3"], barycentre_locus="0,0,0;1,1,1")
+    np.testing.assert_allclose(interpolation.vertices_at(0.25)[3], [0.25, 0.5, 0.75], atol=1e-6)
+
+
 @pytest.mark.parametrize("mesh", [bar, tube])
 def test_blend_at_a_vertex_of_the_simplex_is_that_pose(mesh):
     V, F = mesh()
@@ -119,10 +126,11 @@ def test_bad_input_raises_one_line_value_errors():
     one_line_value_error(lambda: affinterp.Interpolation(V, nan, T), "V1", "nan")
     one_line_value_error(lambda: affinterp.Interpolation(V, W, T[:, :2]), "F", "(m, 3) or (m, 4)")
     one_line_value_error(lambda: affinterp.Interpolation(V, W, T, energy="S"), "energy")
-    for keyword, value in (("loci", ["0:1,2,3"]), ("edge_directions", ["0:1"]),
+    one_line_value_error(lambda: affinterp.Interpolation(V, W, T, loci=["0:1,2;3,4"]), "--locus", "x,y,z")
+    for keyword, value in (("edge_directions", ["0:1"]),
                            ("blend_weight", 0.25)):
         one_line_value_error(lambda: affinterp.Interpolation(V, W, T, **{keyword: value}), keyword)
-    one_line_value_error(lambda: affinterp.Interpolation(V, W, T, barycentre_locus="0,0;1,1"), "2D only")
+    one_line_value_error(lambda: affinterp.Interpolation(V, W, T, barycentre_locus="0,0;1,1"), "x,y,z")
     one_line_value_error(lambda: affinterp.Interpolation(V, W, T).vertices_at(2.0), "time_range")
     blend = affinterp.Blend([V, W, twisted(V, 2.0)], T)
     one_line_value_error(lambda: blend.vertices_at([0.5, 0.5]), "3 weights")

@@ -57,15 +57,20 @@ struct Parser {
     return {text.substr(0, at), *c};
   }
 
-  Eigen::Matrix2Xd points(const std::string& text) const {
+  /// The points "x1,y1;x2,y2;..." (Dim = 2) or "x1,y1,z1;..." (Dim = 3), at least two.
+  template <int Dim>
+  Eigen::Matrix<double, Dim, Eigen::Dynamic> points(const std::string& text) const {
     const auto items = split(text, ';');
-    Eigen::Matrix2Xd result(2, static_cast<Eigen::Index>(items.size()));
+    Eigen::Matrix<double, Dim, Eigen::Dynamic> result(Dim, static_cast<Eigen::Index>(items.size()));
     for (std::size_t j = 0; j < items.size(); ++j) {
-      const auto xy = split(items[j], ',');
-      const auto x = xy.size() == 2 ? to_number(xy[0]) : std::nullopt,
-                 y = xy.size() == 2 ? to_number(xy[1]) : std::nullopt;
-      if (!x || !y) refuse(kind, spec, "'" + items[j] + "' is not a point 'x,y'");
-      result.col(static_cast<Eigen::Index>(j)) << *x, *y;
+      const auto coordinates = split(items[j], ',');
+      bool valid = coordinates.size() == Dim;
+      for (int d = 0; valid && d < Dim; ++d) {
+        const auto x = to_number(coordinates[static_cast<std::size_t>(d)]);
+        if (x) result(d, static_cast<Eigen::Index>(j)) = *x;
+        valid = x.has_value();
+      }
+      if (!valid) refuse(kind, spec, "'" + items[j] + "' is not a point '" + (Dim == 2 ? "x,y" : "x,y,z") + "'");
     }
     if (result.cols() < 2) refuse(kind, spec, "a path needs at least two points (t = 0 and t = 1)");
     return result;
@@ -85,7 +90,15 @@ global::VertexLocus parse_locus(const std::string& spec) {
   const auto colon = spec.find(':');
   if (colon == std::string::npos) refuse(p.kind, spec, "expected 'V[@C]:x1,y1;x2,y2;...'");
   const auto [head, c] = p.weighted(spec.substr(0, colon));
-  return {p.vertex(head), p.points(spec.substr(colon + 1)), c};
+  return {p.vertex(head), p.points<2>(spec.substr(colon + 1)), c};
+}
+
+global3::VertexLocus3 parse_locus3(const std::string& spec) {
+  const Parser p{"--locus", spec};
+  const auto colon = spec.find(':');
+  if (colon == std::string::npos) refuse(p.kind, spec, "expected 'V[@C]:x1,y1,z1;x2,y2,z2;...'");
+  const auto [head, c] = p.weighted(spec.substr(0, colon));
+  return {p.vertex(head), p.points<3>(spec.substr(colon + 1)), c};
 }
 
 global::EdgeDirection parse_edge_direction(const std::string& spec) {
@@ -109,16 +122,46 @@ std::optional<global::BarycentreLocus> parse_barycentre(const std::string& spec)
   if (spec == "none") return std::nullopt;
   const auto [body, c] = p.weighted(spec);
   global::BarycentreLocus locus{Eigen::Matrix2Xd(2, 0), c};
-  if (body != "linear") locus.points = p.points(body);
+  if (body != "linear") locus.points = p.points<2>(body);
   return locus;
 }
 
+std::optional<global3::BarycentreLocus3> parse_barycentre3(const std::string& spec) {
+  const Parser p{"--barycentre-locus", spec};
+  if (spec == "none") return std::nullopt;
+  const auto [body, c] = p.weighted(spec);
+  global3::BarycentreLocus3 locus{c, Eigen::Matrix3Xd(3, 0)};
+  if (body != "linear") locus.points = p.points<3>(body);
+  return locus;
+}
+
+namespace {
+
+void check_vertex(Eigen::Index k, const std::string& what, Eigen::Index vertex_count) {
+  if (k >= vertex_count)
+    throw std::invalid_argument(what + " names vertex " + std::to_string(k) + " but the mesh has " +
+                                std::to_string(vertex_count) + " vertices (indices start at 0)");
+}
+
+}  // namespace
+
+global3::Constraints3 parse_constraints3(const std::vector<std::string>& pins, const std::vector<std::string>& loci,
+                                         const std::string& barycentre, Eigen::Index vertex_count) {
+  global3::Constraints3 constraints;
+  for (const std::string& spec : pins) {
+    constraints.pinned.push_back(parse_pin(spec));
+    check_vertex(constraints.pinned.back().vertex, "--pin", vertex_count);
+  }
+  for (const std::string& spec : loci) {
+    constraints.loci.push_back(parse_locus3(spec));
+    check_vertex(constraints.loci.back().vertex, "--locus", vertex_count);
+  }
+  constraints.barycentre = parse_barycentre3(barycentre);
+  return constraints;
+}
+
 void check_constraint_vertices(const global::Constraints& constraints, Eigen::Index vertex_count) {
-  const auto check = [&](Eigen::Index k, const std::string& what) {
-    if (k >= vertex_count)
-      throw std::invalid_argument(what + " names vertex " + std::to_string(k) + " but the mesh has " +
-                                  std::to_string(vertex_count) + " vertices (indices start at 0)");
-  };
+  const auto check = [&](Eigen::Index k, const std::string& what) { check_vertex(k, what, vertex_count); };
   for (const auto& pin : constraints.pinned) check(pin.vertex, "--pin");
   for (const auto& locus : constraints.loci) check(locus.vertex, "--locus");
   for (const auto& edge : constraints.edges) {

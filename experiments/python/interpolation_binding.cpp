@@ -62,9 +62,8 @@ SpaceKeywords space_keywords(const Keywords& k) {
   };
   if (k.blend_weight != defaults.blend_weight) refuse("blend_weight");
   if (k.blend_weights) refuse("blend_weights");
-  if (!k.loci.empty()) refuse("loci");
   if (!k.edge_directions.empty()) refuse("edge_directions");
-  SpaceKeywords space{k.homotopy, k.rotation_branch, k.area_weighted, k.symmetric, {}, k.barycentre_locus,
+  SpaceKeywords space{k.homotopy, k.rotation_branch, k.area_weighted, k.symmetric, {}, k.loci, k.barycentre_locus,
                       k.time_range};
   for (const py::object& pin : k.pins) space.pins.push_back(py::str(pin));
   return space;
@@ -194,7 +193,8 @@ Parameters (the names, defaults and rules of `affinterp interpolate`, which are 
   time_range        (t0, t1), t0 <= t1: the times vertices_at accepts (extrapolation beyond [0, 1] allowed)
 With E^S, E^R or a blend and no pins, loci or edge directions, one edge fixes rotation and scale, as in the
 CLI. With (n, 3) vertices and (m, 3) triangles or (m, 4) tetrahedra the 3D engine runs (E^F; homotopy,
-rotation_branch, area_weighted, symmetric, pins, barycentre_locus 'linear[@C]' or 'none', time_range), frames are (n, 3),
+rotation_branch, area_weighted, symmetric, pins, loci 'V[@C]:x,y,z;...', barycentre_locus 'linear[@C]', 'none' or
+'x,y,z;...[@C]', time_range), frames are (n, 3),
 and the 2D-only keywords raise ValueError. Bad input (shapes, NaN, degenerate or flipped triangles, unknown
 names, ...) raises ValueError with the CLI's one-line message.)";
   return doc;

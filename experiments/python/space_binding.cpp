@@ -21,25 +21,12 @@ void check_meshes3(const std::vector<global3::Mesh3>& meshes, const std::vector<
   }
 }
 
-/// The barycentre's gauge in 3D: "linear[@C]" or "none".
-std::optional<global3::BarycentreLine3> barycentre_line3(const std::string& spec) {
-  if (spec == "none") return std::nullopt;
-  if (!spec.starts_with("linear"))
-    value_error("barycentre_locus '" + spec + "': a path through points is 2D only (3D: 'linear[@C]' or 'none')");
-  const std::optional<global::BarycentreLocus> locus = io::parse_barycentre(spec);
-  return global3::BarycentreLine3{locus ? locus->weight : 1.0};
-}
-
 global3::Interpolation3Options options3(const SpaceKeywords& k, Eigen::Index vertex_count) {
   global3::Interpolation3Options options;
   options.homotopy = global::parse_option<global::LocalHomotopy>(k.homotopy);
   options.rotation_branch = global::parse_option<global::RotationBranch>(k.rotation_branch);
   options.area_weighted = k.area_weighted, options.symmetric = k.symmetric;
-  options.constraints.barycentre = barycentre_line3(k.barycentre_locus);
-  for (const std::string& pin : k.pins) {
-    options.constraints.pinned.push_back(io::parse_pin(pin));
-    if (options.constraints.pinned.back().vertex >= vertex_count) value_error("pins: no vertex " + pin);
-  }
+  options.constraints = io::parse_constraints3(k.pins, k.loci, k.barycentre_locus, vertex_count);
   return options;
 }
 

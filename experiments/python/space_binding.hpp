@@ -16,7 +16,7 @@ namespace affinterp::python {
 struct SpaceKeywords {
   std::string homotopy, rotation_branch;
   bool area_weighted = true, symmetric = false;
-  std::vector<std::string> pins;
+  std::vector<std::string> pins, loci;
   std::string barycentre_locus;
   std::pair<double, double> time_range;
 };

@@ -56,6 +56,14 @@ std::vector<const Eigen::Matrix3Xd*> pointers(const std::vector<Eigen::Matrix3Xd
   return list;
 }
 
+/// The options, unless their constraints have a time (loci, a barycentre through points), which a blend has not.
+Blend3Options without_loci(Blend3Options options) {
+  const Constraints3& c = options.constraints;
+  if (!c.loci.empty() || (c.barycentre && c.barycentre->points.cols() > 0))
+    throw RefusedProblem("a blend's constraints are pins and the barycentre's weighted sum: a locus has no time there");
+  return options;
+}
+
 }  // namespace
 
 void Blend3::Engine::decompose(const std::vector<Matrix3d>& maps, const DualGraph3& graph,
@@ -114,7 +122,7 @@ Eigen::Matrix3Xd Blend3::Engine::frame(const Eigen::VectorXd& w, std::size_t thr
 Blend3::Blend3(const std::vector<Mesh3>& poses, Blend3Options options)
     : Blend3(poses.empty() ? Mesh3{} : poses.front(), poses, std::move(options)) {}
 Blend3::Blend3(const Mesh3& rest, const std::vector<Mesh3>& poses, Blend3Options options)
-    : engine_(std::make_unique<Engine>(validated(rest, poses), poses, std::move(options))) {}
+    : engine_(std::make_unique<Engine>(validated(rest, poses), poses, without_loci(std::move(options)))) {}
 Blend3::~Blend3() = default;
 Blend3::Blend3(Blend3&&) noexcept = default;
 Blend3& Blend3::operator=(Blend3&&) noexcept = default;

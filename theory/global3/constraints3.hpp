@@ -1,8 +1,10 @@
 #pragma once
-// The constraint function C of Kaji §4 in 3D: pinned vertices and the barycentre, each a term c ‖ℓ(v) − r‖² whose
-// target r a frame gives (ConstraintTargets3): for an interpolation the straight line from source to target,
-// (1−t)p_k + t q_k; for a blend the weighted sum Σ_k w_k p_k over the poses. Vertex loci along curves, edge
-// directions and a barycentre along a B-spline (2D options.hpp) are not offered in 3D yet.
+// The constraint function C of Kaji §4 in 3D: pinned vertices, vertex loci and the barycentre, each a term
+// c ‖ℓ(v) − r‖² whose target r a frame gives (ConstraintTargets3). For an interpolation: a pinned vertex on the
+// straight line from source to target, (1−t)p_k + t q_k; a vertex locus on the B-spline through its points at
+// t = 0 … 1 (global/locus.hpp, as in 2D); the barycentre on the line between the two barycentres or on the
+// B-spline through its points. For a blend, the weighted sum Σ_k w_k p_k over the poses (pins and the barycentre's
+// line only: a locus has no time there). Edge directions (2D options.hpp) are not offered in 3D.
 #include "theory/global/options.hpp"
 
 #include <Eigen/Core>
@@ -12,28 +14,49 @@
 
 namespace affinterp::global3 {
 
-/// The barycentre Σ v_k / n should be at the frame's barycentre target: adds c_o ‖Σ v/n − u_o‖². On E^F without
-/// pins it only fixes the translation (the minimiser's shape does not depend on c_o).
-struct BarycentreLine3 {
+/// Vertex `vertex` should trace u(t), the B-spline through `points` (3 × N, N ≥ 2) at t = 0, 1/(N−1), …, 1:
+/// adds c ‖v_k − u(t)‖².
+struct VertexLocus3 {
+  Eigen::Index vertex = 0;
+  Eigen::Matrix3Xd points;
+  double weight = 1.0;  ///< c > 0
+};
+
+/// The barycentre Σ v_k / n should be at u_o(t): the line between the source's and the target's barycentres (no
+/// points), or the B-spline through `points`. Adds c_o ‖Σ v/n − u_o‖². On E^F without pins or loci it only fixes
+/// the translation (the minimiser's shape does not depend on c_o).
+struct BarycentreLocus3 {
   double weight = 1.0;  ///< c_o > 0
+  Eigen::Matrix3Xd points;
 };
 
 struct Constraints3 {
   /// Vertex k should be at its target: adds c ‖v_k − r_k‖² (global::PinnedVertex's vertex and weight c > 0).
   std::vector<global::PinnedVertex> pinned;
-  /// On by default: without it a pinned vertex must fix the translation.
-  std::optional<BarycentreLine3> barycentre = BarycentreLine3{};
+  std::vector<VertexLocus3> loci;
+  /// On by default: without it a pinned vertex or a locus must fix the translation.
+  std::optional<BarycentreLocus3> barycentre = BarycentreLocus3{};
 };
 
-/// Where a frame's constraints want the vertices: column j of `pinned` for Constraints3::pinned[j], and the
+/// The vertex terms of `constraints` in the order ConstraintTargets3 lists their targets: the pins, then the loci
+/// (vertex and weight each).
+std::vector<global::PinnedVertex> vertex_terms(const Constraints3& constraints);
+
+/// Where a frame's constraints want the vertices: column j of `vertices` for vertex_terms(…)[j], and the
 /// barycentre's point.
 struct ConstraintTargets3 {
-  Eigen::Matrix3Xd pinned;
+  Eigen::Matrix3Xd vertices;
   Eigen::Vector3d barycentre = Eigen::Vector3d::Zero();
 };
 
+/// The targets of an interpolation from `source` to `target` (3 × n each) at time t, as above. Throws
+/// std::invalid_argument for a locus of fewer than two points or with a non-finite one.
+ConstraintTargets3 interpolation_targets(const Constraints3& constraints, const Eigen::Matrix3Xd& source,
+                                         const Eigen::Matrix3Xd& target, double t);
+
 /// The targets of the poses' weighted sum: pinned vertex k at Σ_j w_j (pose j's vertex k), the barycentre at
-/// Σ_j w_j (pose j's barycentre). `poses` are 3 × n vertex matrices, as many as `w` has entries.
+/// Σ_j w_j (pose j's barycentre). `poses` are 3 × n vertex matrices, as many as `w` has entries. Throws
+/// std::invalid_argument for loci or a barycentre through points, which have no weighted sum.
 ConstraintTargets3 weighted_targets(const Constraints3& constraints, const std::vector<const Eigen::Matrix3Xd*>& poses,
                                     const Eigen::VectorXd& w);
 

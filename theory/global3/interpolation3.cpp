@@ -72,7 +72,7 @@ Eigen::Matrix3Xd Interpolation3::Engine::frame(double t, std::size_t threads_, F
   PoissonSystem3::Block b = system.right_hand_side(A, threads_);
   const auto assembled = Clock::now();
   Eigen::Matrix3Xd v = system.solve(
-      std::move(b), weighted_targets(options.constraints, {&source, &target}, Eigen::Vector2d(1 - t, t)), threads_);
+      std::move(b), interpolation_targets(options.constraints, source, target, t), threads_);
   if (timings) {
     const auto seconds = [](auto from, auto to) { return std::chrono::duration<double>(to - from).count(); };
     *timings = {seconds(start, mapped), seconds(mapped, assembled), seconds(assembled, Clock::now())};
@@ -113,8 +113,7 @@ std::vector<Eigen::Matrix3d> Interpolation3::local_maps_at(double t) const {
 }
 
 ConstraintTargets3 Interpolation3::targets_at(double t) const {
-  return weighted_targets(engine_->options.constraints, {&engine_->source, &engine_->target},
-                          Eigen::Vector2d(1 - t, t));
+  return interpolation_targets(engine_->options.constraints, engine_->source, engine_->target, t);
 }
 
 double Interpolation3::energy_at(double t, const Eigen::Matrix3Xd& v) const {

@@ -46,7 +46,8 @@ struct Interpolation3Options {
   bool area_weighted = true;
   /// E′(t) = E(t) + E^{−1}(1 − t), the source's and the target's elements both fitted (above).
   bool symmetric = false;
-  /// Pinned vertices move on (1−t)p_k + t q_k, the barycentre on the line between the two barycentres.
+  /// Pinned vertices move on (1−t)p_k + t q_k, vertex loci on their B-splines, the barycentre on the line between
+  /// the two barycentres or its B-spline (constraints3.hpp).
   Constraints3 constraints;
   std::optional<global::SparseBackEnd> back_end;  ///< none: chosen by the mesh's size
   /// Threads one frame's loops and solve may use; 0: chosen by the mesh's size (small meshes: one).

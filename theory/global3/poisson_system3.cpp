@@ -26,6 +26,7 @@ struct PoissonSystem3::Data {
   std::vector<int> star_start, star_element;   ///< each vertex's (element, corner) pairs, compressed rows
   std::vector<unsigned char> star_corner;
   Constraints3 constraints;
+  std::vector<global::PinnedVertex> vertex_terms;  ///< the pins, then the loci (constraints3.hpp)
   std::unique_ptr<global::SparseFactor<double>> factor;
   Eigen::VectorXd z;  ///< K⁻¹ 1, for Sherman–Morrison (pins and barycentre)
 };
@@ -40,6 +41,12 @@ Eigen::MatrixXd edges_to_corners(int d) {
   return C;
 }
 
+/// Unless a locus's points are at least two and finite (`what` names it).
+void require_points(const Eigen::Matrix3Xd& points, const std::string& what) {
+  if (points.cols() < 2) throw RefusedProblem(what + ": a locus needs at least two points");
+  if (!points.allFinite()) throw RefusedProblem(what + ": a locus point is not finite");
+}
+
 void require_constraints(const Constraints3& constraints, Index n) {
   for (const global::PinnedVertex& pin : constraints.pinned) {
     if (pin.vertex < 0 || pin.vertex >= n)
@@ -47,11 +54,20 @@ void require_constraints(const Constraints3& constraints, Index n) {
     if (!(pin.weight > 0) || !std::isfinite(pin.weight))
       throw RefusedProblem("pinned vertex " + std::to_string(pin.vertex) + ": the weight must be positive and finite");
   }
-  if (constraints.barycentre &&
-      (!(constraints.barycentre->weight > 0) || !std::isfinite(constraints.barycentre->weight)))
-    throw RefusedProblem("barycentre locus: the weight must be positive and finite");
-  if (constraints.pinned.empty() && !constraints.barycentre)
-    throw RefusedProblem("nothing fixes the translation: give a barycentre locus or a pinned vertex");
+  for (const VertexLocus3& locus : constraints.loci) {
+    const std::string what = "locus of vertex " + std::to_string(locus.vertex);
+    if (locus.vertex < 0 || locus.vertex >= n) throw RefusedProblem(what + ": no such vertex");
+    if (!(locus.weight > 0) || !std::isfinite(locus.weight))
+      throw RefusedProblem(what + ": the weight must be positive and finite");
+    require_points(locus.points, what);
+  }
+  if (constraints.barycentre) {
+    if (!(constraints.barycentre->weight > 0) || !std::isfinite(constraints.barycentre->weight))
+      throw RefusedProblem("barycentre locus: the weight must be positive and finite");
+    if (constraints.barycentre->points.cols() > 0) require_points(constraints.barycentre->points, "barycentre locus");
+  }
+  if (constraints.pinned.empty() && constraints.loci.empty() && !constraints.barycentre)
+    throw RefusedProblem("nothing fixes the translation: give a barycentre locus, a pinned vertex or a vertex locus");
 }
 
 /// The vertex stars of `elements`: (element, corner) pairs of each vertex in increasing element order.
@@ -106,16 +122,15 @@ std::vector<Eigen::Triplet<double>> element_terms(std::span<const Mesh3* const> 
 /// K = L + Σ c_k e_k e_kᵀ (+ s e_0 e_0ᵀ without pins), analysed and factorised.
 void factorise_system(PoissonSystem3::Data& data, std::vector<Eigen::Triplet<double>> triplets,
                       std::optional<global::SparseBackEnd> back_end) {
-  for (const global::PinnedVertex& pin : data.constraints.pinned)
-    triplets.emplace_back(pin.vertex, pin.vertex, pin.weight);
+  for (const global::PinnedVertex& term : data.vertex_terms) triplets.emplace_back(term.vertex, term.vertex, term.weight);
   Eigen::SparseMatrix<double> K(data.n, data.n);
   K.setFromTriplets(triplets.begin(), triplets.end());
-  if (data.constraints.pinned.empty()) K.coeffRef(0, 0) += K.diagonal().mean();  // the gauge: v_0 = 0
+  if (data.vertex_terms.empty()) K.coeffRef(0, 0) += K.diagonal().mean();  // the gauge: v_0 = 0
   data.factor = back_end ? global::make_sparse_factor<double>(*back_end) : global::make_sparse_factor<double>(data.n);
   data.factor->analyse(K);
   if (!data.factor->factorise(K, global::frame_threads(static_cast<std::size_t>(data.n), true)))
     throw RefusedProblem("the E^F system is singular: its minimiser is not unique");
-  if (!data.constraints.pinned.empty() && data.constraints.barycentre) {
+  if (!data.vertex_terms.empty() && data.constraints.barycentre) {
     PoissonSystem3::Block ones = PoissonSystem3::Block::Ones(data.n, 1);
     data.factor->solve_in_place(ones, 1);
     data.z = ones.col(0);
@@ -137,6 +152,7 @@ PoissonSystem3::PoissonSystem3(std::span<const Mesh3* const> rests, bool area_we
   data_->elements = first.elements.replicate(1, static_cast<Index>(rests.size()));
   data_->n = first.vertex_count();
   data_->constraints = constraints;
+  data_->vertex_terms = vertex_terms(constraints);
   data_->weights = Eigen::VectorXd::Ones(terms);
   if (area_weighted)
     for (std::size_t r = 0; r < rests.size(); ++r)
@@ -167,9 +183,9 @@ PoissonSystem3::Block PoissonSystem3::right_hand_side(std::span<const Matrix3d> 
 
 Eigen::Matrix3Xd PoissonSystem3::solve(Block b, const ConstraintTargets3& targets, std::size_t threads) const {
   const Data& data = *data_;
-  const auto& pinned = data.constraints.pinned;
+  const auto& pinned = data.vertex_terms;
   for (std::size_t j = 0; j < pinned.size(); ++j)
-    b.row(pinned[j].vertex) += pinned[j].weight * targets.pinned.col(static_cast<Index>(j)).transpose();
+    b.row(pinned[j].vertex) += pinned[j].weight * targets.vertices.col(static_cast<Index>(j)).transpose();
   const bool sherman_morrison = !pinned.empty() && data.constraints.barycentre;
   const double n = static_cast<double>(data.n);
   if (sherman_morrison) b.rowwise() += (data.constraints.barycentre->weight / n) * targets.barycentre.transpose();
@@ -196,9 +212,9 @@ double PoissonSystem3::energy(std::span<const Matrix3d> A, const Eigen::Matrix3X
     const auto s = static_cast<std::size_t>(i);
     E += data.weights[i] * ((X - A[s] * data.edges[s]) * data.pinv[s]).squaredNorm();
   }
-  const auto& pinned = data.constraints.pinned;
+  const auto& pinned = data.vertex_terms;
   for (std::size_t j = 0; j < pinned.size(); ++j)
-    E += pinned[j].weight * (v.col(pinned[j].vertex) - targets.pinned.col(static_cast<Index>(j))).squaredNorm();
+    E += pinned[j].weight * (v.col(pinned[j].vertex) - targets.vertices.col(static_cast<Index>(j))).squaredNorm();
   if (data.constraints.barycentre)
     E += data.constraints.barycentre->weight * (v.rowwise().mean() - targets.barycentre).squaredNorm();
   return E;

@@ -17,8 +17,8 @@
 // Symmetrised (E′(t) = E(t) + E^{−1}(1 − t), interpolation3.hpp): the same sum over a second rest pose of the
 // same elements, the target, whose edges E_i and weights w_i are the target's; L is the sum of both, still
 // constant in t, and term r·m + i (r = 0 source, 1 target) takes its own map.
-// Constraints: pins add c on L's diagonal; the barycentre term is a rank-one dense matrix (c_o/n²) 11ᵀ, handled
-// by Sherman–Morrison on top of the pinned factor, or, without pins, as the gauge: L's kernel is the translations
+// Constraints: pins and vertex loci add c on L's diagonal; the barycentre term is a rank-one dense matrix (c_o/n²) 11ᵀ, handled
+// by Sherman–Morrison on top of the pinned factor, or, without pins or loci, as the gauge: L's kernel is the translations
 // (a connected mesh) and Σ_i W_i A_iᵀ ⟂ 1, so the minimiser is any solution of L V = b (computed with vertex 0
 // grounded: L + s e_0e_0ᵀ) shifted to the target barycentre.
 #include "theory/global/sparse_factor.hpp"
@@ -39,7 +39,8 @@ class PoissonSystem3 {
   using Block = global::SparseFactor<double>::Block;  ///< n × 3, row k = vertex k
 
   /// The set-up: L with the constraints' diagonal, its factorisation. `rest` must be valid
-  /// (mesh3_validation.hpp). Throws global::RefusedProblem for a pinned vertex out of range or a weight not
+  /// (mesh3_validation.hpp). Throws global::RefusedProblem for a pinned vertex or a locus's out of range, a locus
+  /// of fewer than two points or a non-finite one, a weight not
   /// positive and finite, no constraint fixing the translation, or a system the factorisation finds singular.
   PoissonSystem3(const Mesh3& rest, bool area_weighted, const Constraints3& constraints,
                  std::optional<global::SparseBackEnd> back_end);

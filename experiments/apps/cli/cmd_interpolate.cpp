@@ -389,14 +389,16 @@ void add_engine_options(CLI::App& cmd, InterpolateOptions& o) {
 void add_constraint_options(CLI::App& cmd, io::InterpolationRequest& request) {
   cmd.add_option("--pin", request.pins, "V[@C]: vertex V moves on the straight line p_V -> q_V (repeatable)");
   cmd.add_option("--locus", request.loci,
-                 "V[@C]:x1,y1;x2,y2;...: vertex V follows the spline through the points at t = 0..1 (repeatable)");
+                 "V[@C]:x1,y1;x2,y2;...: vertex V follows the spline through the points at t = 0..1 (repeatable; "
+                 "3D: x1,y1,z1;...)");
   cmd.add_option(
       "--edge-direction", request.edge_directions,
       "I:J[:homotopy|linear][@C]: edge v_I - v_J follows the local homotopy (default) or the straight path. "
       "With E^S, E^R or blend and no --pin/--locus/--edge-direction, one edge of the source triangle nearest "
       "the barycentre follows its local homotopy (fixes rotation and scale; listed in metrics.json)");
   cmd.add_option("--barycentre-locus", request.barycentre_locus,
-                 "linear[@C] | none | x1,y1;x2,y2;...[@C]: the barycentre's path (linear: source to target)")
+                 "linear[@C] | none | x1,y1;x2,y2;...[@C]: the barycentre's path (linear: source to target; 3D: "
+                 "x1,y1,z1;...)")
       ->capture_default_str();
 }
 

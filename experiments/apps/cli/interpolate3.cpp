@@ -18,20 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// The barycentre's gauge in 3D: "linear[@C]" (the line between the barycentres, weight C) or "none".
-std::optional<global3::BarycentreLine3> barycentre_line(const std::string& spec) {
-  if (spec == "none") return std::nullopt;
-  if (!spec.starts_with("linear"))
-    throw CommandFailed("--barycentre-locus '" + spec + "': a path through points is 2D only (3D: linear[@C] or none)",
-                        usage_error);
-  try {
-    const std::optional<global::BarycentreLocus> locus = io::parse_barycentre(spec);
-    return global3::BarycentreLine3{locus ? locus->weight : 1.0};
-  } catch (const std::invalid_argument& e) {
-    throw CommandFailed(e.what(), usage_error);
-  }
-}
-
 /// Interpolation3's options from the request (the names and defaults of theory/global/options.hpp).
 global3::Interpolation3Options engine_options3(const io::InterpolationRequest& request, Eigen::Index vertex_count) {
   global3::Interpolation3Options options;
@@ -39,17 +25,12 @@ global3::Interpolation3Options engine_options3(const io::InterpolationRequest& r
   options.rotation_branch = request.options.rotation_branch;
   options.area_weighted = request.options.area_weighted;
   options.symmetric = request.options.symmetric;
-  options.constraints.barycentre = barycentre_line(request.barycentre_locus);
   try {
-    for (const std::string& pin : request.pins) options.constraints.pinned.push_back(io::parse_pin(pin));
+    options.constraints =
+        io::parse_constraints3(request.pins, request.loci, request.barycentre_locus, vertex_count);
   } catch (const std::invalid_argument& e) {
     throw CommandFailed(e.what(), usage_error);
   }
-  for (const global::PinnedVertex& pin : options.constraints.pinned)
-    if (pin.vertex < 0 || pin.vertex >= vertex_count)
-      throw CommandFailed("--pin " + std::to_string(pin.vertex) + ": no such vertex (the meshes have " +
-                              std::to_string(vertex_count) + ")",
-                          usage_error);
   return options;
 }
 
@@ -106,7 +87,7 @@ void refuse_planar_only_options(const CLI::App& command, const io::Interpolation
                             ": 3D meshes take E^F only (E^R's closed form rests on the plane's complex numbers)",
                         usage_error);
   for (const char* option :
-       {"--blend-weight", "--blend-weights", "--locus", "--edge-direction", "--allow-flipped-target"})
+       {"--blend-weight", "--blend-weights", "--edge-direction", "--allow-flipped-target"})
     if (command.count(option) > 0)
       throw CommandFailed(std::string(option) + ": a 2D option, not available for 3D meshes", usage_error);
 }
