@@ -2,8 +2,8 @@
 // has a row, E^F with the linear homotopy is the per-vertex linear blend, exp-log on consistent branches inverts no
 // triangle where the linear blend collapses the tube through its axis; written to claims.json, read back
 // unchanged and rendered into the report's 3D table.
-#include "experiments/inputs/shapes3d/bar3.hpp"
 #include "experiments/measurements/engine3_quality.hpp"
+#include "experiments/inputs/shapes3d/bar3.hpp"
 #include "reports/generator/report.hpp"
 
 #include <gtest/gtest.h>

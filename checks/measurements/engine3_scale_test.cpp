@@ -16,8 +16,8 @@ namespace {
 namespace fs = std::filesystem;
 
 nlohmann::json repetition(const std::string& name, double ns, double peak_mb) {
-  return {{"name", name},         {"run_name", name},         {"run_type", "iteration"}, {"iterations", 1},
-          {"real_time", ns},      {"cpu_time", ns},           {"time_unit", "ns"},       {"ns_per_iteration", ns},
+  return {{"name", name},         {"run_name", name},      {"run_type", "iteration"}, {"iterations", 1},
+          {"real_time", ns},      {"cpu_time", ns},        {"time_unit", "ns"},       {"ns_per_iteration", ns},
           {"triangles", 1422848}, {"peak_rss_mb", peak_mb}};
 }
 

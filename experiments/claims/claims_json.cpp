@@ -112,12 +112,18 @@ nlohmann::json claims_document(const ClaimRegistry& registry, const std::vector<
     if (entry != nullptr) claims.push_back(*entry);
   }
   return {
-      {"tool", "affinterp"},          {"generated_at", utc_now()},
-      {"seed", context.seed},         {"size", to_string(context.size)},
-      {"environment", environment},   {"claims", claims},
-      {"engine_speed", engine.speed}, {"engine_scale", engine.scale},
-      {"engine_cli", engine.cli},     {"engine3_speed", engine.engine3},
-      {"engine3_scale", engine.engine3_scale},   {"engine3_quality", engine.engine3_quality},
+      {"tool", "affinterp"},
+      {"generated_at", utc_now()},
+      {"seed", context.seed},
+      {"size", to_string(context.size)},
+      {"environment", environment},
+      {"claims", claims},
+      {"engine_speed", engine.speed},
+      {"engine_scale", engine.scale},
+      {"engine_cli", engine.cli},
+      {"engine3_speed", engine.engine3},
+      {"engine3_scale", engine.engine3_scale},
+      {"engine3_quality", engine.engine3_quality},
   };
 }
 

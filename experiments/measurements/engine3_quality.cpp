@@ -50,7 +50,8 @@ std::vector<Method> methods() {
          return frames;
        }},
   };
-  for (auto [name, homotopy] : {std::pair{"E^F, linear", LocalHomotopy::linear}, {"E^F, polar", LocalHomotopy::polar},
+  for (auto [name, homotopy] : {std::pair{"E^F, linear", LocalHomotopy::linear},
+                                {"E^F, polar", LocalHomotopy::polar},
                                 {"E^F, SVD", LocalHomotopy::svd}})
     all.push_back(engine_method(name, homotopy, RotationBranch::consistent, false));
   all.push_back(engine_method("E^F, exp-log, principal branch", LocalHomotopy::exp, RotationBranch::principal, false));

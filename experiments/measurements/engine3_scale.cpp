@@ -12,8 +12,8 @@ namespace affinterp::measurements {
 namespace {
 
 /// `name`'s repetitions of `counter` in `file`, scaled by `unit`, against `limit`; nullopt when it did not run.
-std::optional<Engine3Target> target_of(const std::filesystem::path& file, const std::string& counter,
-                                       const char* name, double unit, double limit) {
+std::optional<Engine3Target> target_of(const std::filesystem::path& file, const std::string& counter, const char* name,
+                                       double unit, double limit) {
   const auto results = bench::read_bench_results(file, counter);
   if (!results) return std::nullopt;
   const auto median = (*results)[name];
@@ -28,7 +28,10 @@ std::optional<Engine3Target> target_of(const std::filesystem::path& file, const 
 }
 
 nlohmann::json target_json(const Engine3Target& t) {
-  return {{"median", t.median}, {"limit", t.limit}, {"range", interval_json(t.range)}, {"verdict", verdict_json(t.verdict)}};
+  return {{"median", t.median},
+          {"limit", t.limit},
+          {"range", interval_json(t.range)},
+          {"verdict", verdict_json(t.verdict)}};
 }
 
 Engine3Target target_from(const nlohmann::json& json) {

@@ -63,8 +63,8 @@ SpaceKeywords space_keywords(const Keywords& k) {
   if (k.blend_weight != defaults.blend_weight) refuse("blend_weight");
   if (k.blend_weights) refuse("blend_weights");
   if (!k.edge_directions.empty()) refuse("edge_directions");
-  SpaceKeywords space{k.homotopy, k.rotation_branch, k.area_weighted, k.symmetric, {}, k.loci, k.barycentre_locus,
-                      k.time_range};
+  SpaceKeywords space{k.homotopy, k.rotation_branch,  k.area_weighted, k.symmetric, {},
+                      k.loci,     k.barycentre_locus, k.time_range};
   for (const py::object& pin : k.pins) space.pins.push_back(py::str(pin));
   return space;
 }

@@ -127,8 +127,8 @@ void write_engine3_scale(std::ostringstream& md, const std::optional<measurement
   if (!scale) return;
   const auto target = [&](const char* what, const measurements::Engine3Target& t, const char* unit, int digits) {
     md << "| " << what << " | " << fixed(t.median, digits) << " | " << fixed(t.range.lo, digits) << " – "
-       << fixed(t.range.hi, digits) << " | ≤ " << fixed(t.limit, digits) << " " << unit << " | "
-       << met_cell(t.verdict) << " |\n";
+       << fixed(t.range.hi, digits) << " | ≤ " << fixed(t.limit, digits) << " " << unit << " | " << met_cell(t.verdict)
+       << " |\n";
   };
   md << "At a million triangles: bench_3d_scale on CGAL's elephant subdivided four times, "
      << fixed(scale->triangles, 0) << " triangles, towards its twist (" << measured_on(scale->run)

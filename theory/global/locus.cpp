@@ -18,8 +18,7 @@ Eigen::Spline<double, Dim> interpolating_spline(const typename BasicLocus<Dim>::
 }  // namespace
 
 template <int Dim>
-BasicLocus<Dim>::BasicLocus(Points points)
-    : points_(std::move(points)), spline_(interpolating_spline<Dim>(points_)) {}
+BasicLocus<Dim>::BasicLocus(Points points) : points_(std::move(points)), spline_(interpolating_spline<Dim>(points_)) {}
 
 template <int Dim>
 typename BasicLocus<Dim>::Point BasicLocus<Dim>::at(double t) const {

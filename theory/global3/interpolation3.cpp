@@ -47,7 +47,8 @@ struct Interpolation3::Engine {
         paths(element_maps(s, t), options.homotopy, options.rotation_branch, dual_graph3(s.elements)),
         system(rest_poses(s, t, options.symmetric), options.area_weighted, options.constraints, options.back_end),
         threads(frame_threads3(options.frame_threads, s)) {
-    if (options.symmetric) reverse.emplace(element_maps(t, s), options.homotopy, Eigen::Matrix3Xd(-paths.rotation_logs()));
+    if (options.symmetric)
+      reverse.emplace(element_maps(t, s), options.homotopy, Eigen::Matrix3Xd(-paths.rotation_logs()));
   }
 
   void require_time(double t) const {
@@ -71,8 +72,8 @@ Eigen::Matrix3Xd Interpolation3::Engine::frame(double t, std::size_t threads_, F
   const auto mapped = Clock::now();
   PoissonSystem3::Block b = system.right_hand_side(A, threads_);
   const auto assembled = Clock::now();
-  Eigen::Matrix3Xd v = system.solve(
-      std::move(b), interpolation_targets(options.constraints, source, target, t), threads_);
+  Eigen::Matrix3Xd v =
+      system.solve(std::move(b), interpolation_targets(options.constraints, source, target, t), threads_);
   if (timings) {
     const auto seconds = [](auto from, auto to) { return std::chrono::duration<double>(to - from).count(); };
     *timings = {seconds(start, mapped), seconds(mapped, assembled), seconds(assembled, Clock::now())};

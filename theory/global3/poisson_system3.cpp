@@ -122,7 +122,8 @@ std::vector<Eigen::Triplet<double>> element_terms(std::span<const Mesh3* const> 
 /// K = L + Σ c_k e_k e_kᵀ (+ s e_0 e_0ᵀ without pins), analysed and factorised.
 void factorise_system(PoissonSystem3::Data& data, std::vector<Eigen::Triplet<double>> triplets,
                       std::optional<global::SparseBackEnd> back_end) {
-  for (const global::PinnedVertex& term : data.vertex_terms) triplets.emplace_back(term.vertex, term.vertex, term.weight);
+  for (const global::PinnedVertex& term : data.vertex_terms)
+    triplets.emplace_back(term.vertex, term.vertex, term.weight);
   Eigen::SparseMatrix<double> K(data.n, data.n);
   K.setFromTriplets(triplets.begin(), triplets.end());
   if (data.vertex_terms.empty()) K.coeffRef(0, 0) += K.diagonal().mean();  // the gauge: v_0 = 0
@@ -143,8 +144,8 @@ PoissonSystem3::PoissonSystem3(const Mesh3& rest, bool area_weighted, const Cons
                                std::optional<global::SparseBackEnd> back_end)
     : PoissonSystem3(std::array{&rest}, area_weighted, constraints, back_end) {}
 
-PoissonSystem3::PoissonSystem3(std::span<const Mesh3* const> rests, bool area_weighted,
-                               const Constraints3& constraints, std::optional<global::SparseBackEnd> back_end)
+PoissonSystem3::PoissonSystem3(std::span<const Mesh3* const> rests, bool area_weighted, const Constraints3& constraints,
+                               std::optional<global::SparseBackEnd> back_end)
     : data_(std::make_unique<Data>()) {
   const Mesh3& first = *rests.front();
   const Index m = first.element_count(), terms = m * static_cast<Index>(rests.size());

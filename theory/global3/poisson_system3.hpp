@@ -17,10 +17,10 @@
 // Symmetrised (E′(t) = E(t) + E^{−1}(1 − t), interpolation3.hpp): the same sum over a second rest pose of the
 // same elements, the target, whose edges E_i and weights w_i are the target's; L is the sum of both, still
 // constant in t, and term r·m + i (r = 0 source, 1 target) takes its own map.
-// Constraints: pins and vertex loci add c on L's diagonal; the barycentre term is a rank-one dense matrix (c_o/n²) 11ᵀ, handled
-// by Sherman–Morrison on top of the pinned factor, or, without pins or loci, as the gauge: L's kernel is the translations
-// (a connected mesh) and Σ_i W_i A_iᵀ ⟂ 1, so the minimiser is any solution of L V = b (computed with vertex 0
-// grounded: L + s e_0e_0ᵀ) shifted to the target barycentre.
+// Constraints: pins and vertex loci add c on L's diagonal; the barycentre term is a rank-one dense matrix (c_o/n²) 11ᵀ,
+// handled by Sherman–Morrison on top of the pinned factor, or, without pins or loci, as the gauge: L's kernel is the
+// translations (a connected mesh) and Σ_i W_i A_iᵀ ⟂ 1, so the minimiser is any solution of L V = b (computed with
+// vertex 0 grounded: L + s e_0e_0ᵀ) shifted to the target barycentre.
 #include "theory/global/sparse_factor.hpp"
 #include "theory/global3/constraints3.hpp"
 #include "theory/global3/mesh3.hpp"
@@ -52,8 +52,8 @@ class PoissonSystem3 {
   PoissonSystem3(PoissonSystem3&&) noexcept;
   PoissonSystem3& operator=(PoissonSystem3&&) noexcept;
 
-  /// b = Σ_i W_i A_iᵀ (n × 3), one A_i per term (element of each rest pose); summed per vertex over its star in a fixed order, so the
-  /// same bits on any number of threads.
+  /// b = Σ_i W_i A_iᵀ (n × 3), one A_i per term (element of each rest pose); summed per vertex over its star in a fixed
+  /// order, so the same bits on any number of threads.
   Block right_hand_side(std::span<const Eigen::Matrix3d> A, std::size_t threads) const;
   /// The minimiser v (3 × n) for the right-hand side b and the constraints' targets. Const and safe to call
   /// from several threads at once.

@@ -39,10 +39,11 @@ std::vector<PosePair> pose_pairs() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app("The 3D engine's frames against baselines (per-vertex linear blend, the deformation stand-in, E^F with "
-               "each local homotopy, exp-log symmetrised): the most elements inverted in a frame and the worst mean "
-               "distortion, per pose pair",
-               "quality_3d");
+  CLI::App app(
+      "The 3D engine's frames against baselines (per-vertex linear blend, the deformation stand-in, E^F with "
+      "each local homotopy, exp-log symmetrised): the most elements inverted in a frame and the worst mean "
+      "distortion, per pose pair",
+      "quality_3d");
   std::string out = "reports/bench/quality_3d.json";
   int frames = 21;
   app.add_option("--out", out, "The JSON file to write (replaced only when the run succeeds)")->capture_default_str();

@@ -70,7 +70,8 @@ EngineTables engine_tables(const RunContext& context) {
   try {
     std::optional<EngineSpeed> speed = engine_speed(context.bench_dir / "bench_interp.json");
     if (speed) speed->history = engine_speed_history(bench::runs_of(context.bench_dir));
-    return {record_json(speed), record_json(engine_scale(context.bench_dir / "bench_scale.json", context)),
+    return {record_json(speed),
+            record_json(engine_scale(context.bench_dir / "bench_scale.json", context)),
             record_json(engine_cli(context.bench_dir / "bench_cli_scale.json")),
             record_json(engine3_speed(context.bench_dir / "bench_3d.json")),
             record_json(engine3_scale(context.bench_dir / "bench_3d_scale.json")),

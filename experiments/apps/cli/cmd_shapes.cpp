@@ -91,9 +91,9 @@ void run(const ShapesOptions& options) {
 
 void add_shapes_command(CLI::App& app) {
   auto options = std::make_shared<ShapesOptions>();
-  CLI::App* cmd =
-      app.add_subcommand("shapes", "Write a generated source/target mesh pair (OUT/source.obj, OUT/target.obj), or a "
-                                   "3D pose set (OUT/pose-0.obj, pose-1.obj, ...; .mesh for tetrahedra).");
+  CLI::App* cmd = app.add_subcommand("shapes",
+                                     "Write a generated source/target mesh pair (OUT/source.obj, OUT/target.obj), or a "
+                                     "3D pose set (OUT/pose-0.obj, pose-1.obj, ...; .mesh for tetrahedra).");
   cmd->add_option("name", options->name, "Shape pair name (see --list)");
   cmd->add_flag("--list", options->list, "List the shape pairs with a description, then exit");
   cmd->add_option("--out", options->out, "Folder for source.obj and target.obj (3D: pose-0.obj, pose-1.obj, ...)");

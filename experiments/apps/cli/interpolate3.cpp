@@ -26,8 +26,7 @@ global3::Interpolation3Options engine_options3(const io::InterpolationRequest& r
   options.area_weighted = request.options.area_weighted;
   options.symmetric = request.options.symmetric;
   try {
-    options.constraints =
-        io::parse_constraints3(request.pins, request.loci, request.barycentre_locus, vertex_count);
+    options.constraints = io::parse_constraints3(request.pins, request.loci, request.barycentre_locus, vertex_count);
   } catch (const std::invalid_argument& e) {
     throw CommandFailed(e.what(), usage_error);
   }
@@ -86,8 +85,7 @@ void refuse_planar_only_options(const CLI::App& command, const io::Interpolation
     throw CommandFailed("--energy " + global::to_string(request.options.energy) +
                             ": 3D meshes take E^F only (E^R's closed form rests on the plane's complex numbers)",
                         usage_error);
-  for (const char* option :
-       {"--blend-weight", "--blend-weights", "--edge-direction", "--allow-flipped-target"})
+  for (const char* option : {"--blend-weight", "--blend-weights", "--edge-direction", "--allow-flipped-target"})
     if (command.count(option) > 0)
       throw CommandFailed(std::string(option) + ": a 2D option, not available for 3D meshes", usage_error);
 }
