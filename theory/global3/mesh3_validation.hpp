@@ -3,6 +3,11 @@
 // lies in GL⁺(3), and the minimiser of E^F (poisson_system3.hpp) is unique up to the translation its
 // constraints fix. Each rule throws global::InvalidMesh (a global::RefusedProblem) with a one-line message naming
 // the element or vertex (0-based).
+//
+// Not refused, as nothing here needs them: non-manifold edges and vertices, and triangles oriented unlike their
+// neighbours (each A_i uses its own triangle's normal in both poses). One consequence to know: the consistent
+// rotation branch walks from element to element through shared facets (rotation_branches3.hpp), so pieces that
+// meet only at a vertex, connected for E^F, each start their own walk at the principal branch.
 #include "theory/global/mesh_validation.hpp"
 #include "theory/global3/mesh3.hpp"
 
