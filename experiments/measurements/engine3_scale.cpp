@@ -51,15 +51,15 @@ std::optional<Engine3Scale> engine3_scale(const std::filesystem::path& bench_fil
   const auto results = bench::read_bench_results(bench_file, "ns_per_iteration");
   if (!results) return std::nullopt;
   Engine3Scale scale = engine3_scale_targets();
-  const auto setup = target_of(bench_file, "ns_per_iteration", "3d-scale/setup", 1e-9, scale.setup_s.limit);
-  const auto frame = target_of(bench_file, "ns_per_iteration", "3d-scale/frame", 1e-6, scale.frame_ms.limit);
+  const auto setup = target_of(bench_file, "ns_per_iteration", "3d-scale/setup/real_time", 1e-9, scale.setup_s.limit);
+  const auto frame = target_of(bench_file, "ns_per_iteration", "3d-scale/frame/real_time", 1e-6, scale.frame_ms.limit);
   // The peak after the frames is the process's high-water mark over both benchmarks.
-  const auto peak = target_of(bench_file, "peak_rss_mb", "3d-scale/frame", 1, scale.peak_MB.limit);
+  const auto peak = target_of(bench_file, "peak_rss_mb", "3d-scale/frame/real_time", 1, scale.peak_MB.limit);
   if (!setup || !frame || !peak) return std::nullopt;
   scale.run = bench_run(*results);
   scale.setup_s = *setup, scale.frame_ms = *frame, scale.peak_MB = *peak;
   if (const auto triangles = bench::read_bench_results(bench_file, "triangles"))
-    scale.triangles = (*triangles)["3d-scale/setup"].value_or(0);
+    scale.triangles = (*triangles)["3d-scale/setup/real_time"].value_or(0);
   return scale;
 }
 
