@@ -11,11 +11,12 @@ namespace affinterp::measurements {
 namespace {
 
 /// bench_3d's benchmarks in the report's order, with what one iteration is.
-const std::array<std::pair<const char*, const char*>, 5> kRows{{
+const std::array<std::pair<const char*, const char*>, 6> kRows{{
     {"3d/setup", "set-up (decompositions, rotation branches, E^F factorisation)"},
     {"3d/frame-1-thread", "one frame, one thread (CPU time)"},
     {"3d/frame-2-threads/real_time", "one frame, two threads (wall time)"},
     {"3d/blend3", "one frame of the blend of three poses, one thread"},
+    {"3d/blend3-2-threads/real_time", "one frame of the blend of three poses, two threads (wall time)"},
     {"3d/stand-in", "one frame of the stand-in (theory/deformation), one thread"},
 }};
 
