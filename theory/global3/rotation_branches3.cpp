@@ -13,36 +13,65 @@ namespace affinterp::global3 {
 
 DualGraph3 dual_graph3(const Eigen::MatrixXi& elements) {
   const int corners = static_cast<int>(elements.rows());
-  // Each facet (the element's vertices but one, sorted; a triangle's third slot −1) with its element; equal
-  // facets side by side after sorting are the dual graph's edges.
-  std::vector<std::pair<std::array<int, 3>, int>> facets;
-  facets.reserve(static_cast<std::size_t>(corners * elements.cols()));
+  const auto m = static_cast<std::size_t>(elements.cols());
+  // Each facet (the element's vertices but one, sorted; a triangle's third slot −1) with its element, bucketed by
+  // its smallest vertex (a counting sort: linear in the facets); equal facets in one bucket are the dual graph's
+  // edges. A bucket holds the few facets around one vertex, compared pairwise.
+  struct Facet {
+    std::array<int, 3> vertices;
+    int element;
+  };
+  std::vector<Facet> facets;
+  facets.reserve(m * static_cast<std::size_t>(corners));
+  int vertex_count = 0;
   for (Eigen::Index i = 0; i < elements.cols(); ++i)
     for (int skip = 0; skip < corners; ++skip) {
       std::array<int, 3> facet{-1, -1, -1};
       for (int c = 0, slot = 0; c < corners; ++c)
         if (c != skip) facet[static_cast<std::size_t>(slot++)] = elements(c, i);
       std::sort(facet.begin(), facet.begin() + corners - 1);
+      vertex_count = std::max(vertex_count, facet[static_cast<std::size_t>(corners - 2)] + 1);
       facets.push_back({facet, static_cast<int>(i)});
     }
-  std::sort(facets.begin(), facets.end());
-  std::vector<std::vector<int>> adjacent(static_cast<std::size_t>(elements.cols()));
-  for (std::size_t a = 0; a < facets.size();) {
-    std::size_t b = a;
-    while (b < facets.size() && facets[b].first == facets[a].first) ++b;
-    for (std::size_t x = a; x < b; ++x)
-      for (std::size_t y = a; y < b; ++y)
-        if (x != y) adjacent[static_cast<std::size_t>(facets[x].second)].push_back(facets[y].second);
-    a = b;
-  }
+  std::vector<int> bucket_start(static_cast<std::size_t>(vertex_count) + 1, 0);
+  for (const Facet& f : facets) ++bucket_start[static_cast<std::size_t>(f.vertices[0]) + 1];
+  for (std::size_t v = 0; v < static_cast<std::size_t>(vertex_count); ++v) bucket_start[v + 1] += bucket_start[v];
+  std::vector<int> next(bucket_start.begin(), bucket_start.end() - 1), order(facets.size());
+  for (std::size_t k = 0; k < facets.size(); ++k)
+    order[static_cast<std::size_t>(next[static_cast<std::size_t>(facets[k].vertices[0])]++)] = static_cast<int>(k);
+  // Each pair (element, neighbour) both ways, then grouped by element by a second counting sort.
+  std::vector<std::pair<int, int>> pairs;
+  pairs.reserve(facets.size());
+  for (std::size_t v = 0; v < static_cast<std::size_t>(vertex_count); ++v)
+    for (int a = bucket_start[v]; a < bucket_start[v + 1]; ++a)
+      for (int b = a + 1; b < bucket_start[v + 1]; ++b) {
+        const Facet &x = facets[static_cast<std::size_t>(order[static_cast<std::size_t>(a)])],
+                    &y = facets[static_cast<std::size_t>(order[static_cast<std::size_t>(b)])];
+        if (x.vertices == y.vertices && x.element != y.element) {
+          pairs.emplace_back(x.element, y.element);
+          pairs.emplace_back(y.element, x.element);
+        }
+      }
   DualGraph3 graph;
-  graph.start.push_back(0);
-  for (auto& list : adjacent) {
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
-    graph.neighbour.insert(graph.neighbour.end(), list.begin(), list.end());
-    graph.start.push_back(static_cast<int>(graph.neighbour.size()));
+  graph.start.assign(m + 1, 0);
+  for (const auto& [i, j] : pairs) ++graph.start[static_cast<std::size_t>(i) + 1];
+  for (std::size_t i = 0; i < m; ++i) graph.start[i + 1] += graph.start[i];
+  graph.neighbour.resize(pairs.size());
+  std::vector<int> fill(graph.start.begin(), graph.start.end() - 1);
+  for (const auto& [i, j] : pairs) graph.neighbour[static_cast<std::size_t>(fill[static_cast<std::size_t>(i)]++)] = j;
+  // Each element's neighbours in increasing order, once each (two elements may share several facets).
+  std::vector<int> compact_start(m + 1, 0);
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < m; ++i) {
+    const auto first = graph.neighbour.begin() + graph.start[i], last = graph.neighbour.begin() + graph.start[i + 1];
+    std::sort(first, last);
+    const auto unique_end = std::unique(first, last);
+    compact_start[i] = static_cast<int>(kept);
+    for (auto it = first; it != unique_end; ++it) graph.neighbour[kept++] = *it;
   }
+  compact_start[m] = static_cast<int>(kept);
+  graph.neighbour.resize(kept);
+  graph.start = std::move(compact_start);
   return graph;
 }
 
