@@ -60,12 +60,13 @@ std::vector<Method> methods() {
   return all;
 }
 
+/// The frames' cell, against the reference's local maps at each frame's time (`reference[f]`).
 Engine3QualityCell measured(const PosePair& pair, const std::vector<Eigen::Matrix3Xd>& frames,
-                            const std::vector<double>& times, const Interpolation3& reference) {
+                            const std::vector<double>& times,
+                            const std::vector<std::vector<Eigen::Matrix3d>>& reference) {
   Engine3QualityCell cell;
   for (std::size_t f = 0; f < frames.size(); ++f) {
-    const global3::FrameMetrics3 metrics =
-        global3::frame_metrics3(pair.source, frames[f], reference.local_maps_at(times[f]));
+    const global3::FrameMetrics3 metrics = global3::frame_metrics3(pair.source, frames[f], reference[f]);
     if (metrics.inverted_elements > cell.most_inverted)
       cell.most_inverted = metrics.inverted_elements, cell.at_t = times[f];
     if (f == frames.size() / 2) cell.middle_distortion = metrics.mean_distortion;
@@ -89,7 +90,10 @@ Engine3Quality engine3_quality(const std::vector<PosePair>& pairs, int frames,
     if (progress) progress(pair.name);
     quality.pairs.push_back(pair.name);
     quality.elements.push_back(static_cast<long>(pair.source.element_count()));
-    const Interpolation3 reference(pair.source, pair.target);
+    // One reference for every method: exp-log's local maps on consistent branches, at each frame's time.
+    const Interpolation3 exp_log(pair.source, pair.target);
+    std::vector<std::vector<Eigen::Matrix3d>> reference;
+    for (const double t : times) reference.push_back(exp_log.local_maps_at(t));
     for (std::size_t m = 0; m < all.size(); ++m)
       quality.cells[m].push_back(measured(pair, all[m].frames(pair, times), times, reference));
   }

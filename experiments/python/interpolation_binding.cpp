@@ -7,6 +7,7 @@
 #include "experiments/inputs/mesh_pair.hpp"
 #include "experiments/python/arrays.hpp"
 #include "experiments/python/bindings.hpp"
+#include "experiments/python/engine_errors.hpp"
 #include "experiments/python/space_binding.hpp"
 
 #include <pybind11/stl.h>
@@ -124,19 +125,6 @@ class Interpolation {
   }
 
  private:
-  /// The engine's answer to `call`, with its errors as ValueErrors (an error escapes the released GIL as a
-  /// C++ exception and is translated once it is held again).
-  template <class Call>
-  auto translated(Call call) const {
-    try {
-      return call();
-    } catch (const std::out_of_range& e) {
-      throw std::invalid_argument(e.what());
-    } catch (const global::RefusedProblem& e) {
-      throw std::invalid_argument(std::string("refused: ") + e.what());
-    }
-  }
-
   Eigen::Matrix2Xd frame(double t) const {
     return translated([&] { return engine_->vertices_at(t); });
   }

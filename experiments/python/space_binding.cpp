@@ -4,6 +4,7 @@
 #include "experiments/inputs/mesh3_poses.hpp"
 #include "experiments/inputs/mesh_file.hpp"
 #include "experiments/python/bindings.hpp"
+#include "experiments/python/engine_errors.hpp"
 #include "theory/global3/blend3.hpp"
 
 #include <pybind11/stl.h>
@@ -28,18 +29,6 @@ global3::Interpolation3Options options3(const SpaceKeywords& k, Eigen::Index ver
   options.area_weighted = k.area_weighted, options.symmetric = k.symmetric;
   options.constraints = io::parse_constraints3(k.pins, k.loci, k.barycentre_locus, vertex_count);
   return options;
-}
-
-/// The engine's answer to `call`, its refusals as std::invalid_argument (ValueError once the GIL is held).
-template <class Call>
-auto translated3(Call call) {
-  try {
-    return call();
-  } catch (const std::out_of_range& e) {
-    throw std::invalid_argument(e.what());
-  } catch (const global::RefusedProblem& e) {
-    throw std::invalid_argument(std::string("refused: ") + e.what());
-  }
 }
 
 /// (frames.size(), n, 3) holding `frames`.
@@ -69,7 +58,7 @@ class SpaceBlend {
     global3::Blend3Options options;
     options.allow_extrapolation = allow_extrapolation, options.area_weighted = area_weighted;
     options.rotation_branch = global::parse_option<global::RotationBranch>(rotation_branch);
-    engine_ = translated3([&] { return std::make_unique<global3::Blend3>(meshes, options); });
+    engine_ = translated([&] { return std::make_unique<global3::Blend3>(meshes, options); });
     vertex_count_ = meshes[0].vertex_count();
   }
 
@@ -85,7 +74,7 @@ class SpaceBlend {
     std::vector<Eigen::Matrix3Xd> frames;
     {
       py::gil_scoped_release unlocked;
-      frames = translated3([&] { return engine_->vertices_at(vectors); });
+      frames = translated([&] { return engine_->vertices_at(vectors); });
     }
     if (weights.ndim() == 2) return stacked(frames, vertex_count_);
     return to_points(std::move(frames[0]));
@@ -110,7 +99,7 @@ SpaceInterpolation::SpaceInterpolation(const py::object& V0, const py::object& V
   check_meshes3({source, target}, {"V0", "V1"});
   if (!(time_range_.first <= time_range_.second)) value_error("time_range: expected t0 <= t1");
   const global3::Interpolation3Options options = options3(keywords, source.vertex_count());
-  engine_ = translated3([&] { return std::make_unique<global3::Interpolation3>(source, target, options); });
+  engine_ = translated([&] { return std::make_unique<global3::Interpolation3>(source, target, options); });
   vertex_count_ = source.vertex_count();
 }
 
@@ -124,7 +113,7 @@ py::array_t<double> SpaceInterpolation::vertices_at(double t) const {
   Eigen::Matrix3Xd v;
   {
     py::gil_scoped_release unlocked;
-    v = translated3([&] { return engine_->vertices_at(t); });
+    v = translated([&] { return engine_->vertices_at(t); });
   }
   return to_points(std::move(v));
 }
@@ -135,7 +124,7 @@ py::array_t<double> SpaceInterpolation::frames(const py::object& times) const {
   std::vector<Eigen::Matrix3Xd> frames;
   {
     py::gil_scoped_release unlocked;
-    frames = translated3([&] { return engine_->vertices_at(ts); });
+    frames = translated([&] { return engine_->vertices_at(ts); });
   }
   return stacked(frames, vertex_count_);
 }
@@ -143,7 +132,7 @@ py::array_t<double> SpaceInterpolation::frames(const py::object& times) const {
 double SpaceInterpolation::energy_at(double t) const {
   check_time(t);
   py::gil_scoped_release unlocked;
-  return translated3([&] { return engine_->energy_at(t, engine_->vertices_at(t)); });
+  return translated([&] { return engine_->energy_at(t, engine_->vertices_at(t)); });
 }
 
 void bind_blend(py::module_& m) {

@@ -1,7 +1,5 @@
 #include "theory/global3/constraints3.hpp"
 
-#include "theory/global/locus.hpp"
-
 #include <stdexcept>
 
 namespace affinterp::global3 {
@@ -12,18 +10,29 @@ std::vector<global::PinnedVertex> vertex_terms(const Constraints3& constraints) 
   return terms;
 }
 
-ConstraintTargets3 interpolation_targets(const Constraints3& constraints, const Eigen::Matrix3Xd& source,
-                                         const Eigen::Matrix3Xd& target, double t) {
-  ConstraintTargets3 targets;
-  targets.vertices.resize(3, static_cast<Eigen::Index>(constraints.pinned.size() + constraints.loci.size()));
-  Eigen::Index j = 0;
-  for (const global::PinnedVertex& pin : constraints.pinned)
-    targets.vertices.col(j++) = (1 - t) * source.col(pin.vertex) + t * target.col(pin.vertex);
-  for (const VertexLocus3& locus : constraints.loci) targets.vertices.col(j++) = global::Locus3(locus.points).at(t);
+InterpolationTargets3::InterpolationTargets3(const Constraints3& constraints, const Eigen::Matrix3Xd& source,
+                                             const Eigen::Matrix3Xd& target)
+    : pinned_source_(3, static_cast<Eigen::Index>(constraints.pinned.size())),
+      pinned_target_(3, pinned_source_.cols()),
+      barycentre_source_(source.rowwise().mean()),
+      barycentre_target_(target.rowwise().mean()) {
+  for (std::size_t j = 0; j < constraints.pinned.size(); ++j) {
+    pinned_source_.col(static_cast<Eigen::Index>(j)) = source.col(constraints.pinned[j].vertex);
+    pinned_target_.col(static_cast<Eigen::Index>(j)) = target.col(constraints.pinned[j].vertex);
+  }
+  for (const VertexLocus3& locus : constraints.loci) loci_.emplace_back(locus.points);
   if (constraints.barycentre && constraints.barycentre->points.cols() > 0)
-    targets.barycentre = global::Locus3(constraints.barycentre->points).at(t);
-  else
-    targets.barycentre = (1 - t) * source.rowwise().mean() + t * target.rowwise().mean();
+    barycentre_locus_.emplace(constraints.barycentre->points);
+}
+
+ConstraintTargets3 InterpolationTargets3::at(double t) const {
+  ConstraintTargets3 targets;
+  targets.vertices.resize(3, pinned_source_.cols() + static_cast<Eigen::Index>(loci_.size()));
+  targets.vertices.leftCols(pinned_source_.cols()) = (1 - t) * pinned_source_ + t * pinned_target_;
+  for (std::size_t l = 0; l < loci_.size(); ++l)
+    targets.vertices.col(pinned_source_.cols() + static_cast<Eigen::Index>(l)) = loci_[l].at(t);
+  targets.barycentre = barycentre_locus_ ? barycentre_locus_->at(t)
+                                         : Eigen::Vector3d((1 - t) * barycentre_source_ + t * barycentre_target_);
   return targets;
 }
 

@@ -5,6 +5,7 @@
 // t = 0 … 1 (global/locus.hpp, as in 2D); the barycentre on the line between the two barycentres or on the
 // B-spline through its points. For a blend, the weighted sum Σ_k w_k p_k over the poses (pins and the barycentre's
 // line only: a locus has no time there). Edge directions (2D options.hpp) are not offered in 3D.
+#include "theory/global/locus.hpp"
 #include "theory/global/options.hpp"
 
 #include <Eigen/Core>
@@ -49,10 +50,21 @@ struct ConstraintTargets3 {
   Eigen::Vector3d barycentre = Eigen::Vector3d::Zero();
 };
 
-/// The targets of an interpolation from `source` to `target` (3 × n each) at time t, as above. Throws
-/// std::invalid_argument for a locus of fewer than two points or with a non-finite one.
-ConstraintTargets3 interpolation_targets(const Constraints3& constraints, const Eigen::Matrix3Xd& source,
-                                         const Eigen::Matrix3Xd& target, double t);
+/// The targets of an interpolation from `source` to `target` (3 × n each), as above: what a frame needs of the
+/// poses and the loci's B-splines kept from the set-up, so that a frame evaluates them only.
+class InterpolationTargets3 {
+ public:
+  /// Throws std::invalid_argument for a locus of fewer than two points or with a non-finite one.
+  InterpolationTargets3(const Constraints3& constraints, const Eigen::Matrix3Xd& source,
+                        const Eigen::Matrix3Xd& target);
+  ConstraintTargets3 at(double t) const;
+
+ private:
+  Eigen::Matrix3Xd pinned_source_, pinned_target_;  ///< each pinned vertex in the two poses
+  std::vector<global::Locus3> loci_;
+  Eigen::Vector3d barycentre_source_, barycentre_target_;
+  std::optional<global::Locus3> barycentre_locus_;  ///< the barycentre's B-spline, when it has points
+};
 
 /// The targets of the poses' weighted sum: pinned vertex k at Σ_j w_j (pose j's vertex k), the barycentre at
 /// Σ_j w_j (pose j's barycentre). `poses` are 3 × n vertex matrices, as many as `w` has entries. Throws

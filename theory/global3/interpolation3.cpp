@@ -34,18 +34,17 @@ std::vector<const Mesh3*> rest_poses(const Mesh3& source, const Mesh3& target, b
 
 struct Interpolation3::Engine {
   Interpolation3Options options;
-  Eigen::Matrix3Xd source, target;
   ElementPaths3 paths;
   std::optional<ElementPaths3> reverse;  ///< symmetrised: the paths from the target, I to A_i⁻¹
   PoissonSystem3 system;
+  InterpolationTargets3 targets;  ///< after the system, which refuses bad constraints with its own messages
   std::size_t threads;
 
   Engine(const Mesh3& s, const Mesh3& t, Interpolation3Options o)
       : options(std::move(o)),
-        source(s.vertices),
-        target(t.vertices),
         paths(element_maps(s, t), options.homotopy, options.rotation_branch, dual_graph3(s.elements)),
         system(rest_poses(s, t, options.symmetric), options.area_weighted, options.constraints, options.back_end),
+        targets(options.constraints, s.vertices, t.vertices),
         threads(frame_threads3(options.frame_threads, s)) {
     if (options.symmetric)
       reverse.emplace(element_maps(t, s), options.homotopy, Eigen::Matrix3Xd(-paths.rotation_logs()));
@@ -72,8 +71,7 @@ Eigen::Matrix3Xd Interpolation3::Engine::frame(double t, std::size_t threads_, F
   const auto mapped = Clock::now();
   PoissonSystem3::Block b = system.right_hand_side(A, threads_);
   const auto assembled = Clock::now();
-  Eigen::Matrix3Xd v =
-      system.solve(std::move(b), interpolation_targets(options.constraints, source, target, t), threads_);
+  Eigen::Matrix3Xd v = system.solve(std::move(b), targets.at(t), threads_);
   if (timings) {
     const auto seconds = [](auto from, auto to) { return std::chrono::duration<double>(to - from).count(); };
     *timings = {seconds(start, mapped), seconds(mapped, assembled), seconds(assembled, Clock::now())};
@@ -113,9 +111,7 @@ std::vector<Eigen::Matrix3d> Interpolation3::local_maps_at(double t) const {
   return A;
 }
 
-ConstraintTargets3 Interpolation3::targets_at(double t) const {
-  return interpolation_targets(engine_->options.constraints, engine_->source, engine_->target, t);
-}
+ConstraintTargets3 Interpolation3::targets_at(double t) const { return engine_->targets.at(t); }
 
 double Interpolation3::energy_at(double t, const Eigen::Matrix3Xd& v) const {
   if (v.cols() != engine_->system.vertex_count()) throw std::invalid_argument("energy_at: v needs one column a vertex");
