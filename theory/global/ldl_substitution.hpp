@@ -31,7 +31,7 @@ struct LdlColumns {
 };
 
 /// The substitution's steps on y (n × m, row-major), over the columns `js` of L (any range of column indices,
-/// in the order given). `columns` is a template argument for the frames' one and two right-hand sides, so that
+/// in the order given). `columns` is a template argument for the frames' one, two and three right-hand sides, so that
 /// the loops over a row are unrolled and row j's entries stay in registers while its column of L is applied
 /// (L is strictly lower there: no entry is row j); 0 is any count m. y aliases none of L's arrays, so that its
 /// stores do not force L's loads to be repeated.
@@ -141,7 +141,8 @@ void ldl_substitute_by_subtrees(const LdlColumns<Scalar>& L, Block& Y, std::size
   });
 }
 
-/// Y ← (L D Lᴴ)⁻¹ Y for any number of columns, the one- and two-column cases unrolled; by L's subtrees when
+/// Y ← (L D Lᴴ)⁻¹ Y for any number of columns, the one-, two- and three-column cases (2D frames, 3D frames)
+/// unrolled; by L's subtrees when
 /// it has them, on up to `threads` threads.
 template <class Scalar, class Block>
 void ldl_solve_in_place(const LdlColumns<Scalar>& L, Block& Y, std::size_t threads) {
@@ -156,6 +157,8 @@ void ldl_solve_in_place(const LdlColumns<Scalar>& L, Block& Y, std::size_t threa
     solve(std::integral_constant<int, 1>{});
   else if (Y.cols() == 2)
     solve(std::integral_constant<int, 2>{});
+  else if (Y.cols() == 3)
+    solve(std::integral_constant<int, 3>{});
   else
     solve(std::integral_constant<int, 0>{});
 }
