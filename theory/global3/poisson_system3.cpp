@@ -23,8 +23,6 @@ struct PoissonSystem3::Data {
   std::vector<Eigen::Matrix<double, 4, 3>> W;  ///< W_i = w_i C E_i⁺ (rows beyond d + 1 zero)
   std::vector<Matrix3d> edges;                 ///< E_i (columns beyond d zero)
   std::vector<Matrix3d> pinv;                  ///< E_i⁺ (rows beyond d zero)
-  std::vector<int> star_start, star_element;   ///< each vertex's (element, corner) pairs, compressed rows
-  std::vector<unsigned char> star_corner;
   Constraints3 constraints;
   std::vector<global::PinnedVertex> vertex_terms;  ///< the pins, then the loci (constraints3.hpp)
   std::unique_ptr<global::SparseFactor<double>> factor;
@@ -68,24 +66,6 @@ void require_constraints(const Constraints3& constraints, Index n) {
   }
   if (constraints.pinned.empty() && constraints.loci.empty() && !constraints.barycentre)
     throw RefusedProblem("nothing fixes the translation: give a barycentre locus, a pinned vertex or a vertex locus");
-}
-
-/// The vertex stars of `elements`: (element, corner) pairs of each vertex in increasing element order.
-void build_stars(PoissonSystem3::Data& data) {
-  data.star_start.assign(static_cast<std::size_t>(data.n) + 1, 0);
-  for (Index i = 0; i < data.elements.cols(); ++i)
-    for (Index c = 0; c < data.elements.rows(); ++c)
-      ++data.star_start[static_cast<std::size_t>(data.elements(c, i)) + 1];
-  for (std::size_t k = 0; k < static_cast<std::size_t>(data.n); ++k) data.star_start[k + 1] += data.star_start[k];
-  std::vector<int> next(data.star_start.begin(), data.star_start.end() - 1);
-  data.star_element.resize(static_cast<std::size_t>(data.elements.size()));
-  data.star_corner.resize(data.star_element.size());
-  for (Index i = 0; i < data.elements.cols(); ++i)
-    for (Index c = 0; c < data.elements.rows(); ++c) {
-      const auto slot = static_cast<std::size_t>(next[static_cast<std::size_t>(data.elements(c, i))]++);
-      data.star_element[slot] = static_cast<int>(i);
-      data.star_corner[slot] = static_cast<unsigned char>(c);
-    }
 }
 
 /// W_s, E_s⁺ and L's triplets (w_s C M_s Cᵀ) of every term s = r·m + i, element i of rests[r].
@@ -158,7 +138,6 @@ PoissonSystem3::PoissonSystem3(std::span<const Mesh3* const> rests, bool area_we
   if (area_weighted)
     for (std::size_t r = 0; r < rests.size(); ++r)
       data_->weights.segment(static_cast<Index>(r) * m, m) = element_measures(*rests[r]);
-  build_stars(*data_);
   factorise_system(*data_, element_terms(rests, *data_), back_end);
 }
 
@@ -168,16 +147,20 @@ PoissonSystem3& PoissonSystem3::operator=(PoissonSystem3&&) noexcept = default;
 
 PoissonSystem3::Block PoissonSystem3::right_hand_side(std::span<const Matrix3d> A, std::size_t threads) const {
   const Data& data = *data_;
-  Block b(data.n, 3);
+  Block b = Block::Zero(data.n, 3);
+  // Scattered term by term, in order, each thread adding only the corners of its own range of vertices: every
+  // vertex sums its terms in increasing order whatever the number of threads, and the terms are read as they are
+  // stored (where gathering each vertex's star jumped between them).
   global::for_each_range(static_cast<std::size_t>(data.n), threads, [&](std::size_t first, std::size_t last) {
-    for (std::size_t k = first; k < last; ++k) {
-      Eigen::RowVector3d row = Eigen::RowVector3d::Zero();
-      for (int s = data.star_start[k]; s < data.star_start[k + 1]; ++s) {
-        const auto i = static_cast<std::size_t>(data.star_element[static_cast<std::size_t>(s)]);
-        row += data.W[i].row(data.star_corner[static_cast<std::size_t>(s)]) * A[i].transpose();
+    for (Index s = 0; s < data.elements.cols(); ++s)
+      for (Index c = 0; c < data.elements.rows(); ++c) {
+        const auto k = static_cast<std::size_t>(data.elements(c, s));
+        if (k < first || k >= last) continue;
+        const auto& W = data.W[static_cast<std::size_t>(s)];
+        const Matrix3d& A_s = A[static_cast<std::size_t>(s)];
+        double* b_k = b.data() + 3 * k;  // (W_s A_sᵀ)(c, j) = Σ_l W_s(c, l) A_s(j, l)
+        for (Index j = 0; j < 3; ++j) b_k[j] += W(c, 0) * A_s(j, 0) + W(c, 1) * A_s(j, 1) + W(c, 2) * A_s(j, 2);
       }
-      b.row(static_cast<Index>(k)) = row;
-    }
   });
   return b;
 }
