@@ -18,23 +18,35 @@ using Eigen::Index;
 using Eigen::Matrix3d;
 using global::RefusedProblem;
 
+namespace {
+
+/// The poses' vertex matrices (BlendTargets3 reads their pins and barycentres).
+std::vector<const Eigen::Matrix3Xd*> vertices_of(const std::vector<Mesh3>& poses) {
+  std::vector<const Eigen::Matrix3Xd*> list;
+  for (const Mesh3& pose : poses) list.push_back(&pose.vertices);
+  return list;
+}
+
+}  // namespace
+
 struct Blend3::Engine {
   Blend3Options options;
-  std::vector<Eigen::Matrix3Xd> pose_vertices;
-  std::vector<Eigen::Matrix3Xd> omega;             ///< per pose: ω_{k,i}
-  std::vector<std::vector<Matrix3d>> log_stretch;  ///< per pose: log S_{k,i}
+  std::vector<Eigen::Matrix3Xd> omega;  ///< per pose: ω_{k,i}
+  /// Per pose: log S_{k,i}'s upper triangle (xx, xy, xz, yy, yz, zz) in column i, two thirds of the matrix's bytes
+  /// for the frames' pass over every pose.
+  std::vector<Eigen::Matrix<double, 6, Eigen::Dynamic>> log_stretch;
   PoissonSystem3 system;
+  BlendTargets3 targets;  ///< after the system, which refuses bad constraints with its own messages
   std::size_t threads;
 
   Engine(const Mesh3& rest, const std::vector<Mesh3>& poses, Blend3Options o)
       : options(std::move(o)),
         system(rest, options.area_weighted, options.constraints, options.back_end),
+        targets(options.constraints, vertices_of(poses)),
         threads(frame_threads3(options.frame_threads, rest)) {
     const DualGraph3 graph = dual_graph3(rest.elements);
-    for (std::size_t k = 0; k < poses.size(); ++k) {
-      pose_vertices.push_back(poses[k].vertices);
+    for (std::size_t k = 0; k < poses.size(); ++k)
       decompose(element_maps(rest, poses[k]), graph, k == 0 ? nullptr : &omega.back());
-    }
   }
   void decompose(const std::vector<Matrix3d>& maps, const DualGraph3& graph, const Eigen::Matrix3Xd* previous);
   void maps_at(const Eigen::VectorXd& w, std::span<Matrix3d> out, std::size_t threads_) const;
@@ -48,12 +60,6 @@ const Mesh3& validated(const Mesh3& rest, const std::vector<Mesh3>& poses) {
   check_reference(rest, "rest");
   for (std::size_t k = 0; k < poses.size(); ++k) check_pose(rest, poses[k], "pose " + std::to_string(k));
   return rest;
-}
-
-std::vector<const Eigen::Matrix3Xd*> pointers(const std::vector<Eigen::Matrix3Xd>& poses) {
-  std::vector<const Eigen::Matrix3Xd*> list;
-  for (const auto& pose : poses) list.push_back(&pose);
-  return list;
 }
 
 /// The options, unless their constraints have a time (loci, a barycentre through points), which a blend has not.
@@ -70,14 +76,15 @@ void Blend3::Engine::decompose(const std::vector<Matrix3d>& maps, const DualGrap
                                const Eigen::Matrix3Xd* previous) {
   const auto m = static_cast<Index>(maps.size());
   Eigen::Matrix3Xd principal(3, m);
-  std::vector<Matrix3d> logs(maps.size());
+  Eigen::Matrix<double, 6, Eigen::Dynamic> logs(6, m);
   const auto elements = static_cast<std::size_t>(m);
   global::for_each_range(elements, global::ranges_for(elements, decompositions_per_thread),
                          [&](std::size_t first, std::size_t last) {
                            for (auto i = static_cast<Index>(first); i < static_cast<Index>(last); ++i) {
                              const local3::Svd3<double> d = local3::svd3<double>(maps[static_cast<std::size_t>(i)]);
                              principal.col(i) = local3::rotation_log<double>(d.U * d.V.transpose());
-                             logs[static_cast<std::size_t>(i)] = local3::log_stretch(d);
+                             const Matrix3d L = local3::log_stretch(d);
+                             logs.col(i) << L(0, 0), L(0, 1), L(0, 2), L(1, 1), L(1, 2), L(2, 2);
                            }
                          });
   omega.push_back(options.rotation_branch == global::RotationBranch::consistent
@@ -90,13 +97,16 @@ void Blend3::Engine::maps_at(const Eigen::VectorXd& w, std::span<Matrix3d> out, 
   exp_log_maps(
       [&](Index first, Index last, std::span<Eigen::Vector3d> Omega, std::span<Matrix3d> Lambda) {
         for (Index i = first; i < last; ++i) {
-          const auto j = static_cast<std::size_t>(i - first);
-          Omega[j].setZero();
-          Lambda[j].setZero();
+          Eigen::Vector3d Omega_i = Eigen::Vector3d::Zero();  // summed in registers, stored once
+          Eigen::Matrix<double, 6, 1> Lambda_i = Eigen::Matrix<double, 6, 1>::Zero();
           for (std::size_t k = 0; k < omega.size(); ++k) {
-            Omega[j] += w[static_cast<Index>(k)] * omega[k].col(i);
-            Lambda[j] += w[static_cast<Index>(k)] * log_stretch[k][static_cast<std::size_t>(i)];
+            Omega_i += w[static_cast<Index>(k)] * omega[k].col(i);
+            Lambda_i += w[static_cast<Index>(k)] * log_stretch[k].col(i);
           }
+          Omega[static_cast<std::size_t>(i - first)] = Omega_i;
+          Lambda[static_cast<std::size_t>(i - first)] << Lambda_i[0], Lambda_i[1], Lambda_i[2],  //
+              Lambda_i[1], Lambda_i[3], Lambda_i[4],                                             //
+              Lambda_i[2], Lambda_i[4], Lambda_i[5];
         }
       },
       out, threads_);
@@ -105,13 +115,12 @@ void Blend3::Engine::maps_at(const Eigen::VectorXd& w, std::span<Matrix3d> out, 
 Eigen::Matrix3Xd Blend3::Engine::frame(const Eigen::VectorXd& w, std::size_t threads_, FrameTimings* timings) const {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  std::vector<Matrix3d> A(log_stretch.front().size());
+  std::vector<Matrix3d> A(static_cast<std::size_t>(log_stretch.front().cols()));
   maps_at(w, A, threads_);
   const auto mapped = Clock::now();
   PoissonSystem3::Block b = system.right_hand_side(A, threads_);
   const auto assembled = Clock::now();
-  Eigen::Matrix3Xd v =
-      system.solve(std::move(b), weighted_targets(options.constraints, pointers(pose_vertices), w), threads_);
+  Eigen::Matrix3Xd v = system.solve(std::move(b), targets.at(w), threads_);
   if (timings) {
     const auto seconds = [](auto from, auto to) { return std::chrono::duration<double>(to - from).count(); };
     *timings = {seconds(start, mapped), seconds(mapped, assembled), seconds(assembled, Clock::now())};
@@ -159,7 +168,7 @@ std::vector<Eigen::Matrix3Xd> Blend3::vertices_at(const std::vector<Eigen::Vecto
 
 std::vector<Matrix3d> Blend3::local_maps_at(const Eigen::VectorXd& w) const {
   require_valid_weights(w);
-  std::vector<Matrix3d> A(engine_->log_stretch.front().size());
+  std::vector<Matrix3d> A(static_cast<std::size_t>(engine_->log_stretch.front().cols()));
   engine_->maps_at(w, A, engine_->threads);
   return A;
 }

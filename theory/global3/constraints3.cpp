@@ -36,17 +36,25 @@ ConstraintTargets3 InterpolationTargets3::at(double t) const {
   return targets;
 }
 
-ConstraintTargets3 weighted_targets(const Constraints3& constraints, const std::vector<const Eigen::Matrix3Xd*>& poses,
-                                    const Eigen::VectorXd& w) {
+BlendTargets3::BlendTargets3(const Constraints3& constraints, const std::vector<const Eigen::Matrix3Xd*>& poses)
+    : barycentres_(3, static_cast<Eigen::Index>(poses.size())) {
   if (!constraints.loci.empty() || (constraints.barycentre && constraints.barycentre->points.cols() > 0))
     throw std::invalid_argument("a blend's constraints are pins and the barycentre's weighted sum: loci have no time");
-  ConstraintTargets3 targets;
-  targets.vertices = Eigen::Matrix3Xd::Zero(3, static_cast<Eigen::Index>(constraints.pinned.size()));
   for (std::size_t j = 0; j < poses.size(); ++j) {
-    const Eigen::Index k = static_cast<Eigen::Index>(j);
+    Eigen::Matrix3Xd& pinned = pinned_.emplace_back(3, static_cast<Eigen::Index>(constraints.pinned.size()));
     for (std::size_t p = 0; p < constraints.pinned.size(); ++p)
-      targets.vertices.col(static_cast<Eigen::Index>(p)) += w[k] * poses[j]->col(constraints.pinned[p].vertex);
-    targets.barycentre += w[k] * poses[j]->rowwise().mean();
+      pinned.col(static_cast<Eigen::Index>(p)) = poses[j]->col(constraints.pinned[p].vertex);
+    barycentres_.col(static_cast<Eigen::Index>(j)) = poses[j]->rowwise().mean();
+  }
+}
+
+ConstraintTargets3 BlendTargets3::at(const Eigen::VectorXd& w) const {
+  ConstraintTargets3 targets;
+  targets.vertices = Eigen::Matrix3Xd::Zero(3, pinned_.front().cols());
+  for (std::size_t j = 0; j < pinned_.size(); ++j) {
+    const Eigen::Index k = static_cast<Eigen::Index>(j);
+    targets.vertices += w[k] * pinned_[j];
+    targets.barycentre += w[k] * barycentres_.col(k);
   }
   return targets;
 }

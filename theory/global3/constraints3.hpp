@@ -66,10 +66,18 @@ class InterpolationTargets3 {
   std::optional<global::Locus3> barycentre_locus_;  ///< the barycentre's B-spline, when it has points
 };
 
-/// The targets of the poses' weighted sum: pinned vertex k at Σ_j w_j (pose j's vertex k), the barycentre at
-/// Σ_j w_j (pose j's barycentre). `poses` are 3 × n vertex matrices, as many as `w` has entries. Throws
-/// std::invalid_argument for loci or a barycentre through points, which have no weighted sum.
-ConstraintTargets3 weighted_targets(const Constraints3& constraints, const std::vector<const Eigen::Matrix3Xd*>& poses,
-                                    const Eigen::VectorXd& w);
+/// The targets of a blend of `poses` (3 × n vertex matrices) with weights w, one per pose: pinned vertex k at
+/// Σ_j w_j (pose j's vertex k), the barycentre at Σ_j w_j (pose j's barycentre); the poses' pinned vertices and
+/// barycentres kept from the set-up. Throws std::invalid_argument for loci or a barycentre through points, which
+/// have no weighted sum.
+class BlendTargets3 {
+ public:
+  BlendTargets3(const Constraints3& constraints, const std::vector<const Eigen::Matrix3Xd*>& poses);
+  ConstraintTargets3 at(const Eigen::VectorXd& w) const;
+
+ private:
+  std::vector<Eigen::Matrix3Xd> pinned_;  ///< per pose: its pinned vertices
+  Eigen::Matrix3Xd barycentres_;          ///< column j: pose j's barycentre
+};
 
 }  // namespace affinterp::global3
