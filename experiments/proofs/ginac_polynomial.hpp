@@ -14,8 +14,9 @@ namespace affinterp::proofs {
 /// non-rational number).
 logic::Polynomial to_polynomial(const GiNaC::ex& e);
 
-/// GiNaC's printed text of `e`, as transcripts and error messages show it. Its term order follows GiNaC's internal
-/// hash values, which differ from run to run: a stable text only for numbers and lone symbols.
+/// The printed text of `e`, as scripts, transcripts and error messages show it: GiNaC's default syntax (which ginsh
+/// and GiNaC's parser read) with every sum's terms and every product's factors sorted by their text, so that the
+/// same expression reads the same in every run (GiNaC's own order follows its symbols' creation order).
 std::string text_of(const GiNaC::ex& e);
 
 }  // namespace affinterp::proofs
