@@ -112,7 +112,7 @@ void write_blend(const BlendOptions& o, const global3::Blend3& blend, const glob
   document["frames"] = entries;
   std::ofstream(staged.staging() / "metrics.json") << document.dump(2) << "\n";
   commit_frames3(staged, o.out);
-  std::cerr << "wrote " << frames.size() << " frames to " << o.out
+  std::cerr << "wrote " << frames_count(frames.size()) << " to " << o.out
             << " (most inverted elements in a frame: " << most_inverted(entries) << ")\n";
 }
 

@@ -334,7 +334,7 @@ void run(const InterpolateOptions& o) {
       << metrics_document(o, pair, options, times, recorder.frames()).dump(2) << "\n";
   commit_output(staged, o.out);
 
-  std::cerr << "wrote " << times.size() << " frames to " << o.out;
+  std::cerr << "wrote " << frames_count(times.size()) << " to " << o.out;
   if (recorder.has_quality()) {
     int worst = 0;
     for (const auto& f : recorder.frames()) worst = std::max(worst, f["flipped_triangles"].get<int>());

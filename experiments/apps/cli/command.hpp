@@ -2,6 +2,7 @@
 // The affinterp CLI: one file per command, each adding itself to the application.
 #include <CLI/CLI.hpp>
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 
@@ -15,6 +16,9 @@ struct CommandFailed : std::runtime_error {
 
 /// Exit status for bad command-line usage.
 inline constexpr int usage_error = 2;
+
+/// "1 frame", "30 frames": the count in a command's closing line.
+inline std::string frames_count(std::size_t n) { return std::to_string(n) + (n == 1 ? " frame" : " frames"); }
 
 void add_claims_command(CLI::App& app);
 void add_report_command(CLI::App& app);

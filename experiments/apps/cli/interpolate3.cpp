@@ -122,7 +122,7 @@ void run_interpolate3(const Interpolate3Run& run) {
                                    {"frames", frames}};
   std::ofstream(staged.staging() / "metrics.json") << document.dump(2) << "\n";
   commit_frames3(staged, run.out);
-  std::cerr << "wrote " << run.times.size() << " frames to " << run.out
+  std::cerr << "wrote " << frames_count(run.times.size()) << " to " << run.out
             << " (most inverted elements in a frame: " << most_inverted(frames) << ")\n";
 }
 
