@@ -42,6 +42,9 @@ TEST(Engine3Speed, ReadsMediansSpreadAndPartsAndReadsBackAsWritten) {
   EXPECT_DOUBLE_EQ(speed->rows[0].median_ms, 11);
   EXPECT_DOUBLE_EQ(speed->rows[0].range_ms.lo, 10);
   EXPECT_DOUBLE_EQ(speed->rows[0].range_ms.hi, 12);
+  ASSERT_TRUE(speed->rows[0].limit_ms && speed->rows[0].verdict);  // set-up ≤ 200 ms: every repetition meets it
+  EXPECT_EQ(*speed->rows[0].verdict, Verdict::reproduced);
+  EXPECT_FALSE(speed->rows[1].limit_ms.has_value());  // the one-thread frame has no target
   EXPECT_DOUBLE_EQ(speed->triangles, 57640);
   ASSERT_TRUE(speed->parts.has_value());
   EXPECT_DOUBLE_EQ(speed->parts->solve_ms, 5.0);
@@ -53,6 +56,7 @@ TEST(Engine3Speed, ReadsMediansSpreadAndPartsAndReadsBackAsWritten) {
   const std::string md = report::render(doc).summary;
   EXPECT_NE(md.find("### 3D engine speed"), std::string::npos) << md;
   EXPECT_NE(md.find("| `3d/setup` |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| ≤ 200 ms | yes |"), std::string::npos) << md;
   EXPECT_NE(md.find("solve 5.00 ms"), std::string::npos) << md;
 }
 
