@@ -38,10 +38,12 @@ ElementQuality element_quality(const Mesh3& source, const Mesh3& framed, Eigen::
 }  // namespace
 
 FrameMetrics3 frame_metrics3(const Mesh3& source, const Eigen::Matrix3Xd& frame,
-                             std::span<const Eigen::Matrix3d> local_maps) {
+                             std::span<const Eigen::Matrix3d> local_maps, std::span<const unsigned char> near) {
   if (frame.cols() != source.vertex_count()) throw std::invalid_argument("frame_metrics3: one column a vertex");
   if (!local_maps.empty() && static_cast<Eigen::Index>(local_maps.size()) != source.element_count())
     throw std::invalid_argument("frame_metrics3: one local map an element");
+  if (!near.empty() && static_cast<Eigen::Index>(near.size()) != source.element_count())
+    throw std::invalid_argument("frame_metrics3: one mask entry an element");
   const Mesh3 framed{frame, source.elements};
   FrameMetrics3 metrics;
   metrics.min_ratio = std::numeric_limits<double>::infinity();
@@ -52,6 +54,7 @@ FrameMetrics3 frame_metrics3(const Mesh3& source, const Eigen::Matrix3Xd& frame,
         local_maps.empty() ? Eigen::Matrix3d::Identity() : local_maps[static_cast<std::size_t>(i)];
     const ElementQuality q = element_quality(source, framed, i, A);
     metrics.inverted_elements += q.ratio <= 0;
+    metrics.inverted_near_folds += q.ratio <= 0 && !near.empty() && near[static_cast<std::size_t>(i)];
     metrics.min_ratio = std::min(metrics.min_ratio, q.ratio);
     metrics.max_ratio = std::max(metrics.max_ratio, q.ratio);
     metrics.max_distortion = std::max(metrics.max_distortion, q.distortion);

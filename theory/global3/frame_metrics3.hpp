@@ -18,15 +18,18 @@ namespace affinterp::global3 {
 
 struct FrameMetrics3 {
   Eigen::Index inverted_elements = 0;  ///< elements with a signed measure ratio ≤ 0
-  double min_ratio = 0;                ///< min_i of the signed area or volume ratio
-  double max_ratio = 0;                ///< max_i of it
+  /// Of those, the ones the `near` mask marks (target_folds3.hpp: at or beside a triangle the target folds).
+  Eigen::Index inverted_near_folds = 0;
+  double min_ratio = 0;  ///< min_i of the signed area or volume ratio
+  double max_ratio = 0;  ///< max_i of it
   double max_distortion = 0;  ///< max_i σ1/σ3 of B_i (σ1/σ2 of a triangle's in-plane map); +∞ when some B_i is singular
   double mean_distortion = 0;  ///< the plain mean over elements of the same
   double measure_ratio = 0;    ///< the frame's total area (surfaces: unsigned) or signed volume / the source's
 };
 
-/// The metrics of the frame (3 × n) against the source; `local_maps` empty or one per element.
+/// The metrics of the frame (3 × n) against the source; `local_maps` and `near` each empty or one per element.
 FrameMetrics3 frame_metrics3(const Mesh3& source, const Eigen::Matrix3Xd& frame,
-                             std::span<const Eigen::Matrix3d> local_maps = {});
+                             std::span<const Eigen::Matrix3d> local_maps = {},
+                             std::span<const unsigned char> near = {});
 
 }  // namespace affinterp::global3

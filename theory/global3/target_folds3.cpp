@@ -1,0 +1,82 @@
+#include "theory/global3/target_folds3.hpp"
+
+#include <Eigen/SVD>
+
+#include <algorithm>
+
+namespace affinterp::global3 {
+
+using Eigen::Index;
+
+namespace {
+
+/// Each vertex's elements, compressed: those of vertex k are element[start[k] … start[k + 1]).
+struct VertexElements {
+  std::vector<Index> start, element;
+};
+
+VertexElements vertex_elements(const Mesh3& mesh) {
+  VertexElements stars{std::vector<Index>(static_cast<std::size_t>(mesh.vertex_count()) + 1, 0), {}};
+  for (Index i = 0; i < mesh.element_count(); ++i)
+    for (int c = 0; c < mesh.corners(); ++c) ++stars.start[static_cast<std::size_t>(mesh.elements(c, i)) + 1];
+  for (std::size_t k = 1; k < stars.start.size(); ++k) stars.start[k] += stars.start[k - 1];
+  stars.element.resize(static_cast<std::size_t>(stars.start.back()));
+  std::vector<Index> next(stars.start.begin(), stars.start.end() - 1);
+  for (Index i = 0; i < mesh.element_count(); ++i)
+    for (int c = 0; c < mesh.corners(); ++c)
+      stars.element[static_cast<std::size_t>(next[static_cast<std::size_t>(mesh.elements(c, i))]++)] = i;
+  return stars;
+}
+
+/// The rotation R minimising Σ_k ‖(q_k − q̄) − R (p_k − p̄)‖² over the vertices `ring` (Kabsch).
+Eigen::Matrix3d fitted_rotation(const Eigen::Matrix3Xd& p, const Eigen::Matrix3Xd& q, const std::vector<Index>& ring) {
+  Eigen::Vector3d p_mean = Eigen::Vector3d::Zero(), q_mean = Eigen::Vector3d::Zero();
+  for (const Index k : ring) p_mean += p.col(k), q_mean += q.col(k);
+  p_mean /= static_cast<double>(ring.size()), q_mean /= static_cast<double>(ring.size());
+  Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+  for (const Index k : ring) H += (p.col(k) - p_mean) * (q.col(k) - q_mean).transpose();
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d V = svd.matrixV();
+  if ((V * svd.matrixU().transpose()).determinant() < 0) V.col(2) = -V.col(2);
+  return V * svd.matrixU().transpose();
+}
+
+Eigen::Vector3d normal(const Eigen::Matrix3Xd& v, const Mesh3& mesh, Index i) {
+  const Eigen::Vector3d a = v.col(mesh.elements(0, i));
+  return (v.col(mesh.elements(1, i)) - a).cross(v.col(mesh.elements(2, i)) - a);
+}
+
+}  // namespace
+
+std::vector<Index> target_folds(const Mesh3& source, const Mesh3& target) {
+  std::vector<Index> folds;
+  if (source.kind() != ElementKind::triangle) return folds;
+  const VertexElements stars = vertex_elements(source);
+  std::vector<Index> ring;
+  for (Index i = 0; i < source.element_count(); ++i) {
+    ring.clear();
+    for (int c = 0; c < 3; ++c) {
+      const auto k = static_cast<std::size_t>(source.elements(c, i));
+      for (Index s = stars.start[k]; s < stars.start[k + 1]; ++s)
+        for (int e = 0; e < 3; ++e) ring.push_back(source.elements(e, stars.element[static_cast<std::size_t>(s)]));
+    }
+    std::ranges::sort(ring);
+    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+    const Eigen::Matrix3d R = fitted_rotation(source.vertices, target.vertices, ring);
+    if (normal(target.vertices, source, i).dot(R * normal(source.vertices, source, i)) <= 0) folds.push_back(i);
+  }
+  return folds;
+}
+
+std::vector<unsigned char> near_folds(const Mesh3& mesh, const std::vector<Index>& folds) {
+  std::vector<unsigned char> at_fold_vertex(static_cast<std::size_t>(mesh.vertex_count()), 0);
+  for (const Index i : folds)
+    for (int c = 0; c < mesh.corners(); ++c) at_fold_vertex[static_cast<std::size_t>(mesh.elements(c, i))] = 1;
+  std::vector<unsigned char> near(static_cast<std::size_t>(mesh.element_count()), 0);
+  for (Index i = 0; i < mesh.element_count(); ++i)
+    for (int c = 0; c < mesh.corners(); ++c)
+      near[static_cast<std::size_t>(i)] |= at_fold_vertex[static_cast<std::size_t>(mesh.elements(c, i))];
+  return near;
+}
+
+}  // namespace affinterp::global3
