@@ -34,6 +34,8 @@ TEST(Engine3Quality, LinearBlendFoldsATurnedTubeWhereExpLogDoesNot) {
   EXPECT_EQ(ef_linear.most_inverted, linear_blend.most_inverted);
   EXPECT_NEAR(ef_linear.middle_distortion, linear_blend.middle_distortion, 1e-6 * linear_blend.middle_distortion);
   EXPECT_EQ(exp_log.most_inverted, 0);
+  EXPECT_EQ(quality.target_folds, std::vector<long>{0});  // a twist folds no triangle within the surface
+  EXPECT_EQ(linear_blend.most_inverted_away, linear_blend.most_inverted);
   EXPECT_GT(exp_log.middle_distortion, 1);
 
   const nlohmann::json written = quality;
@@ -43,6 +45,7 @@ TEST(Engine3Quality, LinearBlendFoldsATurnedTubeWhereExpLogDoesNot) {
   const std::string md = report::render(doc).summary;
   EXPECT_NE(md.find("### 3D frames against baselines"), std::string::npos) << md;
   EXPECT_NE(md.find("| E^F, exp-log | 0, "), std::string::npos) << md;
+  EXPECT_NE(md.find("| target's folds (the input) | 0 | 0 |"), std::string::npos) << md;
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include "theory/deformation/deformation.hpp"
 #include "theory/global3/frame_metrics3.hpp"
 #include "theory/global3/interpolation3.hpp"
+#include "theory/global3/target_folds3.hpp"
 #include "theory/sym3/algorithms.hpp"
 
 #include <algorithm>
@@ -60,15 +61,19 @@ std::vector<Method> methods() {
   return all;
 }
 
-/// The frames' cell, against the reference's local maps at each frame's time (`reference[f]`).
+/// The frames' cell, against the reference's local maps at each frame's time (`reference[f]`), with `near` the
+/// elements at or beside the target's folds.
 Engine3QualityCell measured(const PosePair& pair, const std::vector<Eigen::Matrix3Xd>& frames,
                             const std::vector<double>& times,
-                            const std::vector<std::vector<Eigen::Matrix3d>>& reference) {
+                            const std::vector<std::vector<Eigen::Matrix3d>>& reference,
+                            const std::vector<unsigned char>& near) {
   Engine3QualityCell cell;
   for (std::size_t f = 0; f < frames.size(); ++f) {
-    const global3::FrameMetrics3 metrics = global3::frame_metrics3(pair.source, frames[f], reference[f]);
+    const global3::FrameMetrics3 metrics = global3::frame_metrics3(pair.source, frames[f], reference[f], near);
     if (metrics.inverted_elements > cell.most_inverted)
       cell.most_inverted = metrics.inverted_elements, cell.at_t = times[f];
+    cell.most_inverted_away =
+        std::max(cell.most_inverted_away, metrics.inverted_elements - metrics.inverted_near_folds);
     if (f == frames.size() / 2) cell.middle_distortion = metrics.mean_distortion;
   }
   return cell;
@@ -90,12 +95,15 @@ Engine3Quality engine3_quality(const std::vector<PosePair>& pairs, int frames,
     if (progress) progress(pair.name);
     quality.pairs.push_back(pair.name);
     quality.elements.push_back(static_cast<long>(pair.source.element_count()));
+    const std::vector<Eigen::Index> folds = global3::target_folds(pair.source, pair.target);
+    quality.target_folds.push_back(static_cast<long>(folds.size()));
+    const std::vector<unsigned char> near = global3::near_folds(pair.source, folds);
     // One reference for every method: exp-log's local maps on consistent branches, at each frame's time.
     const Interpolation3 exp_log(pair.source, pair.target);
     std::vector<std::vector<Eigen::Matrix3d>> reference;
     for (const double t : times) reference.push_back(exp_log.local_maps_at(t));
     for (std::size_t m = 0; m < all.size(); ++m)
-      quality.cells[m].push_back(measured(pair, all[m].frames(pair, times), times, reference));
+      quality.cells[m].push_back(measured(pair, all[m].frames(pair, times), times, reference, near));
   }
   return quality;
 }
@@ -113,16 +121,16 @@ std::optional<Engine3Quality> read_engine3_quality(const std::filesystem::path& 
 }
 
 void to_json(nlohmann::json& json, const Engine3Quality& quality) {
-  json = {{"frames", quality.frames},
-          {"pairs", quality.pairs},
-          {"elements", quality.elements},
-          {"methods", quality.methods},
-          {"cells", nlohmann::json::array()}};
+  json = {{"frames", quality.frames},     {"pairs", quality.pairs},
+          {"elements", quality.elements}, {"target_folds", quality.target_folds},
+          {"methods", quality.methods},   {"cells", nlohmann::json::array()}};
   for (const auto& row : quality.cells) {
     nlohmann::json cells = nlohmann::json::array();
     for (const Engine3QualityCell& c : row)
-      cells.push_back(
-          {{"most_inverted", c.most_inverted}, {"at_t", c.at_t}, {"middle_distortion", c.middle_distortion}});
+      cells.push_back({{"most_inverted", c.most_inverted},
+                       {"most_inverted_away", c.most_inverted_away},
+                       {"at_t", c.at_t},
+                       {"middle_distortion", c.middle_distortion}});
     json["cells"].push_back(cells);
   }
 }
@@ -131,12 +139,14 @@ void from_json(const nlohmann::json& json, Engine3Quality& quality) {
   quality.frames = json.at("frames");
   quality.pairs = json.at("pairs").get<std::vector<std::string>>();
   quality.elements = json.at("elements").get<std::vector<long>>();
+  quality.target_folds = json.at("target_folds").get<std::vector<long>>();
   quality.methods = json.at("methods").get<std::vector<std::string>>();
   quality.cells.clear();
   for (const auto& row : json.at("cells")) {
     quality.cells.emplace_back();
     for (const auto& c : row)
-      quality.cells.back().push_back({c.at("most_inverted"), c.at("at_t"), c.at("middle_distortion")});
+      quality.cells.back().push_back(
+          {c.at("most_inverted"), c.at("most_inverted_away"), c.at("at_t"), c.at("middle_distortion")});
   }
 }
 

@@ -29,10 +29,12 @@ struct PosePair {
   global3::Mesh3 source, target;
 };
 
-/// One method on one pair: the most elements inverted in a frame (the first such frame's t), the middle frame's
-/// mean distortion.
+/// One method on one pair: the most elements inverted in a frame (the first such frame's t), the most inverted in a
+/// frame away from the target's folds (neither a fold nor sharing a vertex with one: target_folds3.hpp), the middle
+/// frame's mean distortion.
 struct Engine3QualityCell {
   long most_inverted = 0;
+  long most_inverted_away = 0;
   double at_t = 0;
   double middle_distortion = 0;
 };
@@ -41,6 +43,7 @@ struct Engine3Quality {
   int frames = 0;
   std::vector<std::string> pairs;                      ///< the pairs' names
   std::vector<long> elements;                          ///< each pair's element count
+  std::vector<long> target_folds;                      ///< each pair's triangles the target folds (the input's)
   std::vector<std::string> methods;                    ///< each method's name, e.g. "E^F, exp-log, symmetrised"
   std::vector<std::vector<Engine3QualityCell>> cells;  ///< cells[method][pair]
 };
@@ -52,8 +55,8 @@ Engine3Quality engine3_quality(const std::vector<PosePair>& pairs, int frames,
 /// The record in `file` (written by quality_3d), or nullopt when there is none.
 std::optional<Engine3Quality> read_engine3_quality(const std::filesystem::path& file);
 
-/// claims.json's "engine3_quality": {"frames", "pairs", "elements", "methods", "cells": [[{"most_inverted",
-/// "at_t", "middle_distortion"}]]}.
+/// claims.json's "engine3_quality": {"frames", "pairs", "elements", "target_folds", "methods", "cells":
+/// [[{"most_inverted", "most_inverted_away", "at_t", "middle_distortion"}]]}.
 void to_json(nlohmann::json& json, const Engine3Quality& quality);
 void from_json(const nlohmann::json& json, Engine3Quality& quality);
 

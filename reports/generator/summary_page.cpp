@@ -159,20 +159,26 @@ void write_engine3_quality(std::ostringstream& md, const std::optional<measureme
         "(the first such frame's t), counted against the exp-log local maps A_i(t) on consistent branches for every "
         "method (a triangle whose normal opposes A_i(t) n_p), then the mean distortion σ1/σ2 of the frame at "
         "t = 1/2. E^F with the linear homotopy is the per-vertex linear blend exactly (the maps (1 − t)I + tA_i are "
-        "fitted exactly by (1 − t)P + tQ). The cat poses are Sumner and Popović's (SIGGRAPH 2004). "
+        "fitted exactly by (1 − t)P + tQ). The first row counts the triangles the target pose itself folds within "
+        "the surface (its normal opposes the source's carried by the rotation fitted to the triangle's vertex "
+        "one-ring): each element map makes such a fold a half-turn, and no interpolation can keep the triangles "
+        "around it unfolded; \"away\" counts, in the frame with the most, the inverted elements that are neither a "
+        "fold nor share a vertex with one. The cat poses are Sumner and Popović's (SIGGRAPH 2004). "
         "Measurements, not claims.\n\n| method |";
   for (std::size_t p = 0; p < quality->pairs.size(); ++p)
     md << " " << quality->pairs[p] << " (" << quality->elements[p] << ") |";
   md << " most in any pair |\n|---|";
   for (std::size_t p = 0; p <= quality->pairs.size(); ++p) md << "---|";
-  md << "\n";
+  md << "\n| target's folds (the input) |";
+  for (const long folds : quality->target_folds) md << " " << folds << " |";
+  md << " " << *std::max_element(quality->target_folds.begin(), quality->target_folds.end()) << " |\n";
   for (std::size_t m = 0; m < quality->methods.size(); ++m) {
     md << "| " << cell(quality->methods[m]) << " |";
     long most = 0;
     for (const auto& c : quality->cells[m]) {
       most = std::max(most, c.most_inverted);
       md << " " << c.most_inverted;
-      if (c.most_inverted > 0) md << " (t = " << fixed(c.at_t, 2) << ")";
+      if (c.most_inverted > 0) md << " (t = " << fixed(c.at_t, 2) << "; away " << c.most_inverted_away << ")";
       md << ", " << fixed(c.middle_distortion, 2) << " |";
     }
     md << " " << most << " |\n";
