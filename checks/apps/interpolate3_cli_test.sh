@@ -73,6 +73,17 @@ fi
 "$affinterp" interpolate --source tube.off --target tube1.off --out tube-run --frames 3 --format npy --no-figures 2>err ||
   fail "tube: $(cat err)"
 head -c 100 tube-run/frames.npy | grep -q "'shape': (3, 40, 3)" || fail "tube: frames.npy's shape"
+python3 -c "import json; assert json.load(open('tube-run/metrics.json'))['target_folds'] == []" ||
+  fail "tube: a turn folds no triangle within the surface"
+# A target that folds triangles within the surface: a note, their indices and the inversions beside them counted.
+$make_mesh tube 0.5 tube-folded.off folded
+"$affinterp" interpolate --source tube.off --target tube-folded.off --out folded-run --frames 3 --no-figures 2>err ||
+  fail "folded tube: $(cat err)"
+grep -q "note: the target folds [1-9][0-9]* of 64 triangles" err || fail "folded tube: the note ($(cat err))"
+python3 -c "
+import json; d = json.load(open('folded-run/metrics.json'))
+assert d['target_folds'] and all(0 <= f['inverted_near_target_folds'] <= f['inverted_elements'] for f in d['frames'])" ||
+  fail "folded tube: metrics.json's target_folds and inverted_near_target_folds"
 [ ! -e tube-run/viewer.html ] || fail "tube: a viewer despite --no-figures"
 
 # Tetrahedra all negatively oriented are reversed for the engine (a note), the frames keep the file's corners.

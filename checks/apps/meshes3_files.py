@@ -7,7 +7,8 @@ Usage: meshes3_files.py KIND TURN FILE [OPTION], KIND bar or tube; OPTION degene
 collapsed), inverted (mirrored in z: each tetrahedron
 inverted), nan (a coordinate not a number), fewer (one element left out),
 split (a second, disconnected bar), reversed (every
-tetrahedron's corners 1 and 2 swapped)."""
+tetrahedron's corners 1 and 2 swapped), folded (a tube vertex dragged past the next ring: the triangles around it
+turned over within the surface)."""
 import math
 import sys
 from itertools import permutations
@@ -94,6 +95,8 @@ def main(kind, turn, file, option=None):
         vertices[3][1] = float("nan")
     elif option == "reversed":  # every tetrahedron negatively oriented, as some meshers write them
         elements = [[e[0], e[2], e[1], e[3]] for e in elements]
+    elif option == "folded":
+        vertices[2 * 8][0] += 1.6
     elif option == "fewer":
         elements = elements[1:]
     elif option == "split":

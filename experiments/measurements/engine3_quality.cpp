@@ -139,14 +139,16 @@ void from_json(const nlohmann::json& json, Engine3Quality& quality) {
   quality.frames = json.at("frames");
   quality.pairs = json.at("pairs").get<std::vector<std::string>>();
   quality.elements = json.at("elements").get<std::vector<long>>();
-  quality.target_folds = json.at("target_folds").get<std::vector<long>>();
+  // A record written before the target's folds were counted has neither them nor the count away from them.
+  quality.target_folds = json.value("target_folds", std::vector<long>{});
   quality.methods = json.at("methods").get<std::vector<std::string>>();
   quality.cells.clear();
   for (const auto& row : json.at("cells")) {
     quality.cells.emplace_back();
     for (const auto& c : row)
-      quality.cells.back().push_back(
-          {c.at("most_inverted"), c.at("most_inverted_away"), c.at("at_t"), c.at("middle_distortion")});
+      quality.cells.back().push_back({c.at("most_inverted"),
+                                      c.value("most_inverted_away", c.at("most_inverted").get<long>()), c.at("at_t"),
+                                      c.at("middle_distortion")});
   }
 }
 

@@ -41,10 +41,10 @@ struct Engine3QualityCell {
 
 struct Engine3Quality {
   int frames = 0;
-  std::vector<std::string> pairs;                      ///< the pairs' names
-  std::vector<long> elements;                          ///< each pair's element count
-  std::vector<long> target_folds;                      ///< each pair's triangles the target folds (the input's)
-  std::vector<std::string> methods;                    ///< each method's name, e.g. "E^F, exp-log, symmetrised"
+  std::vector<std::string> pairs;    ///< the pairs' names
+  std::vector<long> elements;        ///< each pair's element count
+  std::vector<long> target_folds;    ///< each pair's triangles the target folds (the input's); empty in older records
+  std::vector<std::string> methods;  ///< each method's name, e.g. "E^F, exp-log, symmetrised"
   std::vector<std::vector<Engine3QualityCell>> cells;  ///< cells[method][pair]
 };
 

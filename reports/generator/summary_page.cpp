@@ -169,9 +169,12 @@ void write_engine3_quality(std::ostringstream& md, const std::optional<measureme
     md << " " << quality->pairs[p] << " (" << quality->elements[p] << ") |";
   md << " most in any pair |\n|---|";
   for (std::size_t p = 0; p <= quality->pairs.size(); ++p) md << "---|";
-  md << "\n| target's folds (the input) |";
-  for (const long folds : quality->target_folds) md << " " << folds << " |";
-  md << " " << *std::max_element(quality->target_folds.begin(), quality->target_folds.end()) << " |\n";
+  md << "\n";
+  if (!quality->target_folds.empty()) {
+    md << "| target's folds (the input) |";
+    for (const long folds : quality->target_folds) md << " " << folds << " |";
+    md << " " << *std::max_element(quality->target_folds.begin(), quality->target_folds.end()) << " |\n";
+  }
   for (std::size_t m = 0; m < quality->methods.size(); ++m) {
     md << "| " << cell(quality->methods[m]) << " |";
     long most = 0;

@@ -27,6 +27,9 @@ class Frames3Output {
   /// frame_metrics3 (inversion judged against `local_maps`).
   nlohmann::json record(int k, const Eigen::Matrix3Xd& vertices, std::span<const Eigen::Matrix3d> local_maps,
                         bool quality);
+  /// From now on, the quality metrics also count the inverted elements `near` marks (target_folds3.hpp's
+  /// near_folds) as "inverted_near_target_folds".
+  void count_near_folds(std::vector<unsigned char> near) { near_folds_ = std::move(near); }
   /// Ends frames.npy; throws MeshFileError when a frame is missing.
   void close();
 
@@ -35,6 +38,7 @@ class Frames3Output {
   global3::Mesh3 frame_;
   const global3::Mesh3& reference_;
   std::optional<io::NpyFrameWriter> npy_;
+  std::vector<unsigned char> near_folds_;
 };
 
 /// metrics.json's numbers of one frame, null for a non-finite one.
@@ -42,6 +46,8 @@ nlohmann::json metrics3_json(const global3::FrameMetrics3& metrics);
 
 /// The most inverted elements in a frame of metrics.json's "frames" (0 without quality metrics).
 long long most_inverted(const nlohmann::json& frames);
+/// The most of them in a frame away from the target's folds (not counted in "inverted_near_target_folds").
+long long most_inverted_away_from_folds(const nlohmann::json& frames);
 
 /// OUT/viewer.html of `frames` (labelled by `labels`) into `folder`, or a note on standard error when the
 /// viewer cannot be written (three.js not installed): the frames stand without it.

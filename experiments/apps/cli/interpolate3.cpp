@@ -6,6 +6,7 @@
 #include "experiments/inputs/mesh3_poses.hpp"
 #include "experiments/inputs/mesh_file.hpp"
 #include "theory/global3/interpolation3.hpp"
+#include "theory/global3/target_folds3.hpp"
 
 #include <fstream>
 #include <iomanip>
@@ -46,8 +47,9 @@ nlohmann::json options3_json(const Interpolate3Run& run) {
 /// Each frame's file and metrics.json entry: t, E^F's energy (with the constraints), the quality metrics.
 nlohmann::json write_frames(const Interpolate3Run& run, const global3::Interpolation3& interpolation,
                             const global3::Mesh3& source, bool reoriented, const std::vector<Eigen::Matrix3Xd>& frames,
-                            const fs::path& staging) {
+                            const std::vector<Eigen::Index>& folds, const fs::path& staging) {
   Frames3Output output(staging, source, run.times.size(), run.format, reoriented);
+  if (!folds.empty()) output.count_near_folds(global3::near_folds(source, folds));
   const bool energy = run.metrics == "all" || run.metrics == "energy";
   const bool quality = run.metrics == "all" || run.metrics == "quality";
   nlohmann::json entries = nlohmann::json::array();
@@ -107,9 +109,14 @@ void run_interpolate3(const Interpolate3Run& run) {
   } catch (const global::RefusedProblem& e) {
     throw CommandFailed(std::string("refused: ") + e.what(), 1);
   }
+  const std::vector<Eigen::Index> folds = global3::target_folds(source, pair.poses[1]);
+  if (!folds.empty())
+    std::cerr << "note: the target folds " << folds.size() << " of " << source.element_count()
+              << " triangles within the surface (metrics.json: target_folds); frames may invert at or beside them\n";
   StagedOutput staged(run.out);
   const std::vector<Eigen::Matrix3Xd> solved = interpolation->vertices_at(run.times);
-  const nlohmann::json frames = write_frames(run, *interpolation, source, pair.reoriented, solved, staged.staging());
+  const nlohmann::json frames =
+      write_frames(run, *interpolation, source, pair.reoriented, solved, folds, staged.staging());
   if (run.figures) write_viewer(run, source, solved, staged.staging());
   const nlohmann::json document = {{"source", run.source},
                                    {"target", run.target},
@@ -118,12 +125,15 @@ void run_interpolate3(const Interpolate3Run& run) {
                                    {"elements", source.element_count()},
                                    {"element_kind", source.corners() == 4 ? "tetrahedra" : "triangles"},
                                    {"reoriented", pair.reoriented},
+                                   {"target_folds", folds},
                                    {"options", options3_json(run)},
                                    {"frames", frames}};
   std::ofstream(staged.staging() / "metrics.json") << document.dump(2) << "\n";
   commit_frames3(staged, run.out);
   std::cerr << "wrote " << frames_count(run.times.size()) << " to " << run.out
-            << " (most inverted elements in a frame: " << most_inverted(frames) << ")\n";
+            << " (most inverted elements in a frame: " << most_inverted(frames);
+  if (!folds.empty()) std::cerr << "; away from the target's folds: " << most_inverted_away_from_folds(frames);
+  std::cerr << ")\n";
 }
 
 }  // namespace affinterp::cli
