@@ -1,9 +1,13 @@
 #include "experiments/proofs/step_nodes.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdint>
 #include <initializer_list>
 #include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace affinterp::proofs {
 namespace nodes {
@@ -199,11 +203,15 @@ GiNaC::ex substitution(const GiNaC::ex& e, const GiNaC::symbol& x, const GiNaC::
 }
 
 GiNaC::ex substitution(const GiNaC::ex& e, const GiNaC::exmap& values) {
-  GiNaC::ex s = e;
+  std::vector<std::pair<std::string, std::pair<GiNaC::symbol, GiNaC::ex>>> by_name;
   for (const auto& [x, v] : values) {
     if (!GiNaC::is_a<GiNaC::symbol>(x)) throw std::invalid_argument("substitution: not a symbol");
-    s = substitution(s, GiNaC::ex_to<GiNaC::symbol>(x), v);
+    const GiNaC::symbol& symbol = GiNaC::ex_to<GiNaC::symbol>(x);
+    by_name.push_back({symbol.get_name(), {symbol, v}});
   }
+  std::ranges::sort(by_name, {}, [](const auto& entry) { return entry.first; });
+  GiNaC::ex s = e;
+  for (const auto& [name, substituted] : by_name) s = substitution(s, substituted.first, substituted.second);
   return s;
 }
 

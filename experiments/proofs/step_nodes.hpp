@@ -23,8 +23,9 @@ namespace affinterp::proofs {
 GiNaC::ex derivative(const GiNaC::ex& e, const GiNaC::symbol& x, unsigned n = 1);
 /// e with v for x.
 GiNaC::ex substitution(const GiNaC::ex& e, const GiNaC::symbol& x, const GiNaC::ex& v);
-/// e with each symbol of `values` replaced, one substitution node per symbol (in the map's order: the values
-/// must not contain the symbols replaced).
+/// e with each symbol of `values` replaced, one substitution node per symbol, in the order of their names (the
+/// map's own order follows GiNaC's hash values, which change from run to run; the values must not contain the
+/// symbols replaced, so that any order gives the same value).
 GiNaC::ex substitution(const GiNaC::ex& e, const GiNaC::exmap& values);
 GiNaC::ex determinant_of(const GiNaC::ex& M);
 GiNaC::ex transposed(const GiNaC::ex& M);
