@@ -15,8 +15,9 @@ namespace affinterp::proofs {
 logic::Polynomial to_polynomial(const GiNaC::ex& e);
 
 /// The printed text of `e`, as scripts, transcripts and error messages show it: GiNaC's default syntax (which ginsh
-/// and GiNaC's parser read) with every sum's terms and every product's factors sorted by their text, so that the
-/// same expression reads the same in every run (GiNaC's own order follows its symbols' creation order).
+/// and GiNaC's parser read) with every sum's terms and every product's factors sorted by their text and every sum
+/// inside a product or an integer power given one sign, so that the same expression reads the same in every run
+/// (GiNaC's own order and signs follow hash values that move from run to run).
 std::string text_of(const GiNaC::ex& e);
 
 }  // namespace affinterp::proofs
