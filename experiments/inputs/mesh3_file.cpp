@@ -161,14 +161,14 @@ Mesh3 read_mesh3(const std::filesystem::path& file) {
                       "' (.obj, .off, .ply, .stl surfaces; .mesh tetrahedra)");
 }
 
-bool is_3d_mesh_file(const std::filesystem::path& file) {
-  if (file.extension() == ".mesh") return true;
+std::optional<Mesh3> read_if_3d(const std::filesystem::path& file) {
+  if (file.extension() == ".mesh") return read_mesh3(file);
   try {
-    const Mesh3 mesh = read_mesh3(file);
-    return (mesh.vertices.row(2).array() != 0).any();
+    Mesh3 mesh = read_mesh3(file);
+    if ((mesh.vertices.row(2).array() != 0).any()) return mesh;
   } catch (const MeshFileError&) {
-    return false;
   }
+  return std::nullopt;
 }
 
 const char* mesh3_extension(const Mesh3& mesh) { return mesh.corners() == 4 ? ".mesh" : ".obj"; }

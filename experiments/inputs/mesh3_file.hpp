@@ -10,6 +10,7 @@
 #include "theory/global3/mesh3.hpp"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -22,9 +23,10 @@ global3::Mesh3 read_mesh3(const std::filesystem::path& file);
 /// Triangles when it has no tetrahedra; throws MeshFileError naming the line.
 global3::Mesh3 parse_medit(std::string_view text, const std::string& name);
 
-/// Whether `file` holds a 3D shape: a .mesh file, or a surface with some z ≠ 0. A file the 3D reader cannot read
-/// counts as 2D, so that the 2D reader reports what is wrong with it.
-bool is_3d_mesh_file(const std::filesystem::path& file);
+/// The mesh in `file` when it holds a 3D shape (a .mesh file, or a surface with some z ≠ 0), read once for the 3D
+/// engine; nullopt otherwise. A file the 3D reader cannot read counts as 2D, so that the 2D reader reports what is
+/// wrong with it.
+std::optional<global3::Mesh3> read_if_3d(const std::filesystem::path& file);
 
 /// `mesh` with `vertices` as OBJ (triangles) or MEDIT (tetrahedra) text, full double precision.
 std::string mesh3_text(const global3::Mesh3& mesh);

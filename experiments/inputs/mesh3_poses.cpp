@@ -42,9 +42,16 @@ void check_poses3(const std::vector<Mesh3>& poses, const std::vector<std::string
 }
 
 Poses3 read_poses3(const std::vector<std::filesystem::path>& files) {
+  return read_poses3(std::vector<std::optional<Mesh3>>(files.size()), files);
+}
+
+Poses3 read_poses3(std::vector<std::optional<Mesh3>> meshes, const std::vector<std::filesystem::path>& files) {
   Poses3 read;
   std::vector<std::string> names;
-  for (const auto& file : files) read.poses.push_back(read_mesh3(file)), names.push_back(file.string());
+  for (std::size_t k = 0; k < files.size(); ++k) {
+    read.poses.push_back(k < meshes.size() && meshes[k] ? std::move(*meshes[k]) : read_mesh3(files[k]));
+    names.push_back(files[k].string());
+  }
   if (read.poses.empty()) throw MeshFileError("no mesh given");
   read.reoriented = all_tetrahedra_reversed(read.poses[0]);
   if (read.reoriented)

@@ -5,6 +5,7 @@
 #include "theory/global3/mesh3.hpp"
 
 #include <filesystem>
+#include <optional>
 #include <vector>
 
 namespace affinterp::io {
@@ -18,6 +19,8 @@ struct Poses3 {
 
 /// Reads and checks `files` (at least one; read_mesh3's formats); throws MeshFileError.
 Poses3 read_poses3(const std::vector<std::filesystem::path>& files);
+/// The same for meshes already read from `files` (nullopt: read it here), so that no file is read twice.
+Poses3 read_poses3(std::vector<std::optional<global3::Mesh3>> read, const std::vector<std::filesystem::path>& files);
 
 /// Checks meshes already in memory as read_poses3 does, `names` naming them in messages; throws MeshFileError.
 void check_poses3(const std::vector<global3::Mesh3>& poses, const std::vector<std::string>& names);

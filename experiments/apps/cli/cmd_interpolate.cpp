@@ -345,9 +345,15 @@ void run(const InterpolateOptions& o) {
 
 /// 3D meshes (a .mesh file, or some z != 0) go to the 3D engine (interpolate3.cpp) under the same options.
 void run_any(const InterpolateOptions& o, const CLI::App& cmd) {
-  if (!io::is_3d_mesh_file(o.source) && !io::is_3d_mesh_file(o.target)) return run(o);
-  refuse_planar_only_options(cmd, o.request);
   Interpolate3Run run3;
+  try {  // each file read at most once by the 3D reader: a 3D mesh goes on to the engine as read
+    run3.source_mesh = io::read_if_3d(o.source);
+    if (!run3.source_mesh) run3.target_mesh = io::read_if_3d(o.target);
+  } catch (const io::MeshFileError& e) {
+    throw CommandFailed(e.what(), 1);
+  }
+  if (!run3.source_mesh && !run3.target_mesh) return run(o);
+  refuse_planar_only_options(cmd, o.request);
   run3.source = o.source, run3.target = o.target, run3.out = o.out, run3.request = o.request;
   run3.times = frame_times(o, run3.request.options);
   run3.times_given = o.times.has_value();

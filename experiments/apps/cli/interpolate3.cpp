@@ -95,7 +95,7 @@ void refuse_planar_only_options(const CLI::App& command, const io::Interpolation
 void run_interpolate3(const Interpolate3Run& run) {
   io::Poses3 pair;
   try {
-    pair = io::read_poses3({run.source, run.target});
+    pair = io::read_poses3({run.source_mesh, run.target_mesh}, {run.source, run.target});
   } catch (const io::MeshFileError& e) {
     throw CommandFailed(e.what(), 1);
   }

@@ -3,9 +3,11 @@
 // under the 2D command's option names. cmd_interpolate.cpp reads the options and chooses this path when a mesh
 // is 3D; the options that have no 3D counterpart are refused there (refuse_planar_only_options).
 #include "experiments/inputs/interpolation_request.hpp"
+#include "theory/global3/mesh3.hpp"
 
 #include <CLI/CLI.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +15,8 @@ namespace affinterp::cli {
 
 struct Interpolate3Run {
   std::string source, target, out;
+  /// The meshes when already read (cmd_interpolate.cpp reads them to tell 3D from 2D), else read from the files.
+  std::optional<global3::Mesh3> source_mesh, target_mesh;
   /// homotopy, rotation_branch, area_weighted, t_begin, t_end from the options; pins and barycentre_locus
   io::InterpolationRequest request;
   std::vector<double> times;  ///< the frames' times, in order
