@@ -8,6 +8,7 @@
 #include "experiments/inputs/mesh3_poses.hpp"
 #include "experiments/inputs/mesh_file.hpp"
 #include "theory/global3/keyframes3.hpp"
+#include "theory/global3/target_folds3.hpp"
 
 #include <fstream>
 #include <iomanip>
@@ -83,14 +84,35 @@ std::vector<std::string> frame_labels(const std::vector<BlendFrame>& frames) {
   return labels;
 }
 
-/// Writes the frames of `blend` at `frames`' weights into OUT with metrics.json, after staging all of it.
-void write_blend(const BlendOptions& o, const global3::Blend3& blend, const global3::Mesh3& rest, bool reoriented,
-                 const std::vector<BlendFrame>& frames, nlohmann::json document) {
+/// Per pose, the triangles it folds within the surface against the first (target_folds3.hpp; none for the first),
+/// with a note on standard error for each pose that folds any.
+std::vector<std::vector<Eigen::Index>> pose_folds(const io::Poses3& read, const std::vector<std::string>& names) {
+  std::vector<std::vector<Eigen::Index>> folds(read.poses.size());
+  for (std::size_t k = 1; k < read.poses.size(); ++k) {
+    folds[k] = global3::target_folds(read.poses[0], read.poses[k]);
+    if (!folds[k].empty())
+      std::cerr << "note: " << names[k] << " folds " << folds[k].size() << " of " << read.poses[0].element_count()
+                << " triangles within the surface against the first pose (metrics.json: pose_folds); frames may "
+                   "invert at or beside them\n";
+  }
+  return folds;
+}
+
+/// Writes the frames of `blend` at `frames`' weights into OUT with metrics.json, after staging all of it; `read`
+/// the poses (the first the rest pose).
+void write_blend(const BlendOptions& o, const global3::Blend3& blend, const io::Poses3& read,
+                 const std::vector<std::string>& names, const std::vector<BlendFrame>& frames,
+                 nlohmann::json document) {
+  const global3::Mesh3& rest = read.poses[0];
+  const std::vector<std::vector<Eigen::Index>> folds = pose_folds(read, names);
+  std::vector<Eigen::Index> all_folds;
+  for (const auto& pose : folds) all_folds.insert(all_folds.end(), pose.begin(), pose.end());
   std::vector<Eigen::VectorXd> weights;
   for (const BlendFrame& frame : frames) weights.push_back(frame.weights);
   const std::vector<Eigen::Matrix3Xd> solved = blend.vertices_at(weights);
   StagedOutput staged(o.out);
-  Frames3Output output(staged.staging(), rest, frames.size(), o.format, reoriented);
+  Frames3Output output(staged.staging(), rest, frames.size(), o.format, read.reoriented);
+  if (!all_folds.empty()) output.count_near_folds(global3::near_folds(rest, all_folds));
   const bool quality = o.metrics == "all";
   nlohmann::json entries = nlohmann::json::array();
   for (std::size_t k = 0; k < frames.size(); ++k) {
@@ -104,6 +126,7 @@ void write_blend(const BlendOptions& o, const global3::Blend3& blend, const glob
   if (o.figures) write_viewer3_or_note(staged.staging(), blend_title(o), rest, solved, frame_labels(frames));
   document["vertices"] = rest.vertex_count(), document["elements"] = rest.element_count();
   document["element_kind"] = rest.corners() == 4 ? "tetrahedra" : "triangles";
+  document["pose_folds"] = folds;
   document["options"] = {{"rotation_branch", global::to_string(o.engine.rotation_branch)},
                          {"area_weighted", o.engine.area_weighted},
                          {"allow_extrapolation", o.engine.allow_extrapolation},
@@ -113,7 +136,9 @@ void write_blend(const BlendOptions& o, const global3::Blend3& blend, const glob
   std::ofstream(staged.staging() / "metrics.json") << document.dump(2) << "\n";
   commit_frames3(staged, o.out);
   std::cerr << "wrote " << frames_count(frames.size()) << " to " << o.out
-            << " (most inverted elements in a frame: " << most_inverted(entries) << ")\n";
+            << " (most inverted elements in a frame: " << most_inverted(entries);
+  if (!all_folds.empty()) std::cerr << "; away from the poses' folds: " << most_inverted_away_from_folds(entries);
+  std::cerr << ")\n";
 }
 
 /// --poses with --weights: one frame per weight vector, all checked before anything is written.
@@ -128,7 +153,7 @@ void run_weights(const BlendOptions& o) {
   try {
     const global3::Blend3 blend(read.poses, o.engine);
     for (const BlendFrame& frame : frames) blend.require_valid_weights(frame.weights);
-    write_blend(o, blend, read.poses[0], read.reoriented, frames, {{"poses", o.poses}});
+    write_blend(o, blend, read, o.poses, frames, {{"poses", o.poses}});
   } catch (const global::RefusedProblem& e) {
     throw CommandFailed(std::string("refused: ") + e.what(), 1);
   }
@@ -154,10 +179,11 @@ std::vector<double> key_frame_times(const BlendOptions& o, double first, double 
 /// --keys: frames through the key poses at their times (C0 at the keys: keyframes3.hpp).
 void run_keys(const BlendOptions& o) {
   std::vector<fs::path> files;
+  std::vector<std::string> names;
   std::vector<double> key_times;
   for (const std::string& key : o.keys) {
     auto [file, t] = parse_key(key);
-    files.push_back(file), key_times.push_back(t);
+    files.push_back(file), names.push_back(file), key_times.push_back(t);
   }
   const io::Poses3 read = read_blend_poses(files);
   try {
@@ -168,7 +194,7 @@ void run_keys(const BlendOptions& o) {
         throw CommandFailed("--times: " + std::to_string(t) + " lies outside the key times", usage_error);
       frames.push_back({keyframes.weights_at(t), t});
     }
-    write_blend(o, keyframes.blend(), read.poses[0], read.reoriented, frames, {{"keys", o.keys}});
+    write_blend(o, keyframes.blend(), read, names, frames, {{"keys", o.keys}});
   } catch (const global::RefusedProblem& e) {
     throw CommandFailed(std::string("refused: ") + e.what(), 1);
   }
@@ -180,9 +206,10 @@ constexpr const char* blend_description =
     "exp(sum_k w_k log S_k) from the first pose, then the E^F solve (weights off the simplex only with "
     "--allow-extrapolation); with --keys A:0 B:0.5 C:1 frames through the poses at those times (--times or "
     "--frames), each segment the blend of its two keys (continuous at the keys). Writes OUT/frame_0000.obj (.mesh "
-    "for tetrahedra) ... or OUT/frames.npy (frames, n, 3), OUT/metrics.json and OUT/viewer.html (orbit, a slider over "
-    "the frames, faces coloured by distortion or inverted elements). On any error OUT keeps its earlier "
-    "content.";
+    "for tetrahedra) ... or OUT/frames.npy (frames, n, 3), OUT/metrics.json (per frame the weights and quality "
+    "metrics, inverted elements among them, apart those at or beside the triangles a surface pose folds within the "
+    "surface against the first, listed per pose as pose_folds) and OUT/viewer.html (orbit, a slider over the "
+    "frames, faces coloured by distortion or inverted elements). On any error OUT keeps its earlier content.";
 
 void add_blend_inputs(CLI::App& cmd, BlendOptions& o) {
   CLI::Option* poses = cmd.add_option("--poses", o.poses, "The poses (the first is the rest mesh)");
