@@ -82,8 +82,8 @@ $make_mesh tube 0.5 tube-folded.off folded
 grep -q "note: the target folds [1-9][0-9]* of 64 triangles" err || fail "folded tube: the note ($(cat err))"
 python3 -c "
 import json; d = json.load(open('folded-run/metrics.json'))
-assert d['target_folds'] and all(0 <= f['inverted_near_target_folds'] <= f['inverted_elements'] for f in d['frames'])" ||
-  fail "folded tube: metrics.json's target_folds and inverted_near_target_folds"
+assert d['target_folds'] and all(0 <= f['inverted_near_folds'] <= f['inverted_elements'] for f in d['frames'])" ||
+  fail "folded tube: metrics.json's target_folds and inverted_near_folds"
 # The same pose in a blend: its folds against the first pose, per pose, and the inversions beside them.
 "$affinterp" blend --poses tube.off tube1.off tube-folded.off --weights 0.2,0.3,0.5 --out folded-blend --no-figures \
   2>err || fail "folded blend: $(cat err)"
@@ -91,7 +91,7 @@ grep -q "note: tube-folded.off folds [1-9][0-9]* of 64 triangles" err || fail "f
 python3 -c "
 import json; d = json.load(open('folded-blend/metrics.json'))
 assert d['pose_folds'][0] == [] and d['pose_folds'][1] == [] and d['pose_folds'][2]
-assert all('inverted_near_target_folds' in f for f in d['frames'])" || fail "folded blend: metrics.json's pose_folds"
+assert all('inverted_near_folds' in f for f in d['frames'])" || fail "folded blend: metrics.json's pose_folds"
 [ ! -e tube-run/viewer.html ] || fail "tube: a viewer despite --no-figures"
 
 # Tetrahedra all negatively oriented are reversed for the engine (a note), the frames keep the file's corners.

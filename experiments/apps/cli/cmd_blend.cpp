@@ -207,8 +207,9 @@ constexpr const char* blend_description =
     "--allow-extrapolation); with --keys A:0 B:0.5 C:1 frames through the poses at those times (--times or "
     "--frames), each segment the blend of its two keys (continuous at the keys). Writes OUT/frame_0000.obj (.mesh "
     "for tetrahedra) ... or OUT/frames.npy (frames, n, 3), OUT/metrics.json (per frame the weights and quality "
-    "metrics, inverted elements among them, apart those at or beside the triangles a surface pose folds within the "
-    "surface against the first, listed per pose as pose_folds) and OUT/viewer.html (orbit, a slider over the "
+    "metrics, inverted elements among them, and as inverted_near_folds those at or beside the triangles a surface pose "
+    "folds within the surface against the first, listed per pose as pose_folds) and OUT/viewer.html (orbit, a slider "
+    "over the "
     "frames, faces coloured by distortion or inverted elements). On any error OUT keeps its earlier content.";
 
 void add_blend_inputs(CLI::App& cmd, BlendOptions& o) {

@@ -371,9 +371,9 @@ constexpr const char* description =
     "zero-area source triangles and flipped target triangles (unless allowed) are refused. On any error OUT keeps "
     "its earlier content. 3D meshes (some z != 0; surfaces as .obj/.off/.ply/.stl, tetrahedra as MEDIT .mesh) "
     "run the 3D engine with E^F: frames as OBJ (surfaces) or .mesh (tetrahedra) or frames.npy (frames, n, 3), "
-    "metrics.json per frame: t, energy, volume or area ratios, distortion, inverted elements (apart, those at or "
-    "beside the triangles a surface target folds within the surface, listed as target_folds); 2D-only options "
-    "are refused.";
+    "metrics.json per frame: t, energy, volume or area ratios, distortion, inverted elements (and as "
+    "inverted_near_folds those at or beside the triangles a surface target folds within the surface, listed as "
+    "target_folds); 2D-only options are refused.";
 
 /// The options the engine takes (global::InterpolationOptions), under its names, defaults and choices.
 void add_engine_options(CLI::App& cmd, InterpolateOptions& o) {

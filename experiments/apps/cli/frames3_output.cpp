@@ -46,7 +46,7 @@ nlohmann::json Frames3Output::record(int k, const Eigen::Matrix3Xd& vertices,
   if (quality) {
     const global3::FrameMetrics3 metrics = global3::frame_metrics3(reference_, vertices, local_maps, near_folds_);
     entry.update(metrics3_json(metrics));
-    if (!near_folds_.empty()) entry["inverted_near_target_folds"] = metrics.inverted_near_folds;
+    if (!near_folds_.empty()) entry["inverted_near_folds"] = metrics.inverted_near_folds;
   }
   return entry;
 }
@@ -75,8 +75,7 @@ long long most_inverted_away_from_folds(const nlohmann::json& frames) {
   long long worst = 0;
   for (const auto& frame : frames)
     if (frame.contains("inverted_elements"))
-      worst =
-          std::max(worst, frame["inverted_elements"].get<long long>() - frame.value("inverted_near_target_folds", 0LL));
+      worst = std::max(worst, frame["inverted_elements"].get<long long>() - frame.value("inverted_near_folds", 0LL));
   return worst;
 }
 

@@ -28,7 +28,7 @@ class Frames3Output {
   nlohmann::json record(int k, const Eigen::Matrix3Xd& vertices, std::span<const Eigen::Matrix3d> local_maps,
                         bool quality);
   /// From now on, the quality metrics also count the inverted elements `near` marks (target_folds3.hpp's
-  /// near_folds) as "inverted_near_target_folds".
+  /// near_folds) as "inverted_near_folds".
   void count_near_folds(std::vector<unsigned char> near) { near_folds_ = std::move(near); }
   /// Ends frames.npy; throws MeshFileError when a frame is missing.
   void close();
@@ -46,7 +46,7 @@ nlohmann::json metrics3_json(const global3::FrameMetrics3& metrics);
 
 /// The most inverted elements in a frame of metrics.json's "frames" (0 without quality metrics).
 long long most_inverted(const nlohmann::json& frames);
-/// The most of them in a frame away from the target's folds (not counted in "inverted_near_target_folds").
+/// The most of them in a frame away from the folds (not counted in "inverted_near_folds").
 long long most_inverted_away_from_folds(const nlohmann::json& frames);
 
 /// OUT/viewer.html of `frames` (labelled by `labels`) into `folder`, or a note on standard error when the
