@@ -18,17 +18,6 @@ using Eigen::Index;
 using Eigen::Matrix3d;
 using global::RefusedProblem;
 
-namespace {
-
-/// The poses' vertex matrices (BlendTargets3 reads their pins and barycentres).
-std::vector<const Eigen::Matrix3Xd*> vertices_of(const std::vector<Mesh3>& poses) {
-  std::vector<const Eigen::Matrix3Xd*> list;
-  for (const Mesh3& pose : poses) list.push_back(&pose.vertices);
-  return list;
-}
-
-}  // namespace
-
 struct Blend3::Engine {
   Blend3Options options;
   std::vector<Eigen::Matrix3Xd> omega;  ///< per pose: ω_{k,i}
@@ -42,7 +31,7 @@ struct Blend3::Engine {
   Engine(const Mesh3& rest, const std::vector<Mesh3>& poses, Blend3Options o)
       : options(std::move(o)),
         system(rest, options.area_weighted, options.constraints, options.back_end),
-        targets(options.constraints, vertices_of(poses)),
+        targets(options.constraints, poses),
         threads(frame_threads3(options.frame_threads, rest)) {
     const DualGraph3 graph = dual_graph3(rest.elements);
     for (std::size_t k = 0; k < poses.size(); ++k)

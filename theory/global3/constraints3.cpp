@@ -36,15 +36,15 @@ ConstraintTargets3 InterpolationTargets3::at(double t) const {
   return targets;
 }
 
-BlendTargets3::BlendTargets3(const Constraints3& constraints, const std::vector<const Eigen::Matrix3Xd*>& poses)
+BlendTargets3::BlendTargets3(const Constraints3& constraints, const std::vector<Mesh3>& poses)
     : barycentres_(3, static_cast<Eigen::Index>(poses.size())) {
   if (!constraints.loci.empty() || (constraints.barycentre && constraints.barycentre->points.cols() > 0))
     throw std::invalid_argument("a blend's constraints are pins and the barycentre's weighted sum: loci have no time");
   for (std::size_t j = 0; j < poses.size(); ++j) {
     Eigen::Matrix3Xd& pinned = pinned_.emplace_back(3, static_cast<Eigen::Index>(constraints.pinned.size()));
     for (std::size_t p = 0; p < constraints.pinned.size(); ++p)
-      pinned.col(static_cast<Eigen::Index>(p)) = poses[j]->col(constraints.pinned[p].vertex);
-    barycentres_.col(static_cast<Eigen::Index>(j)) = poses[j]->rowwise().mean();
+      pinned.col(static_cast<Eigen::Index>(p)) = poses[j].vertices.col(constraints.pinned[p].vertex);
+    barycentres_.col(static_cast<Eigen::Index>(j)) = poses[j].vertices.rowwise().mean();
   }
 }
 

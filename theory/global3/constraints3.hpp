@@ -7,6 +7,7 @@
 // line only: a locus has no time there). Edge directions (2D options.hpp) are not offered in 3D.
 #include "theory/global/locus.hpp"
 #include "theory/global/options.hpp"
+#include "theory/global3/mesh3.hpp"
 
 #include <Eigen/Core>
 
@@ -66,13 +67,13 @@ class InterpolationTargets3 {
   std::optional<global::Locus3> barycentre_locus_;  ///< the barycentre's B-spline, when it has points
 };
 
-/// The targets of a blend of `poses` (3 × n vertex matrices) with weights w, one per pose: pinned vertex k at
+/// The targets of a blend of `poses` (one element list) with weights w, one per pose: pinned vertex k at
 /// Σ_j w_j (pose j's vertex k), the barycentre at Σ_j w_j (pose j's barycentre); the poses' pinned vertices and
 /// barycentres kept from the set-up. Throws std::invalid_argument for loci or a barycentre through points, which
 /// have no weighted sum.
 class BlendTargets3 {
  public:
-  BlendTargets3(const Constraints3& constraints, const std::vector<const Eigen::Matrix3Xd*>& poses);
+  BlendTargets3(const Constraints3& constraints, const std::vector<Mesh3>& poses);
   ConstraintTargets3 at(const Eigen::VectorXd& w) const;
 
  private:

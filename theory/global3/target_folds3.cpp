@@ -1,5 +1,7 @@
 #include "theory/global3/target_folds3.hpp"
 
+#include "theory/global/vertex_stars.hpp"
+
 #include <Eigen/SVD>
 
 #include <algorithm>
@@ -9,24 +11,6 @@ namespace affinterp::global3 {
 using Eigen::Index;
 
 namespace {
-
-/// Each vertex's elements, compressed: those of vertex k are element[start[k] … start[k + 1]).
-struct VertexElements {
-  std::vector<Index> start, element;
-};
-
-VertexElements vertex_elements(const Mesh3& mesh) {
-  VertexElements stars{std::vector<Index>(static_cast<std::size_t>(mesh.vertex_count()) + 1, 0), {}};
-  for (Index i = 0; i < mesh.element_count(); ++i)
-    for (int c = 0; c < mesh.corners(); ++c) ++stars.start[static_cast<std::size_t>(mesh.elements(c, i)) + 1];
-  for (std::size_t k = 1; k < stars.start.size(); ++k) stars.start[k] += stars.start[k - 1];
-  stars.element.resize(static_cast<std::size_t>(stars.start.back()));
-  std::vector<Index> next(stars.start.begin(), stars.start.end() - 1);
-  for (Index i = 0; i < mesh.element_count(); ++i)
-    for (int c = 0; c < mesh.corners(); ++c)
-      stars.element[static_cast<std::size_t>(next[static_cast<std::size_t>(mesh.elements(c, i))]++)] = i;
-  return stars;
-}
 
 /// The rotation R minimising Σ_k ‖(q_k − q̄) − R (p_k − p̄)‖² over the vertices `ring` (Kabsch).
 Eigen::Matrix3d fitted_rotation(const Eigen::Matrix3Xd& p, const Eigen::Matrix3Xd& q, const std::vector<Index>& ring) {
@@ -51,14 +35,14 @@ Eigen::Vector3d normal(const Eigen::Matrix3Xd& v, const Mesh3& mesh, Index i) {
 std::vector<Index> target_folds(const Mesh3& source, const Mesh3& target) {
   std::vector<Index> folds;
   if (source.kind() != ElementKind::triangle) return folds;
-  const VertexElements stars = vertex_elements(source);
+  const global::VertexStars stars = global::vertex_stars(source.elements, source.vertex_count());
   std::vector<Index> ring;
   for (Index i = 0; i < source.element_count(); ++i) {
     ring.clear();
     for (int c = 0; c < 3; ++c) {
       const auto k = static_cast<std::size_t>(source.elements(c, i));
-      for (Index s = stars.start[k]; s < stars.start[k + 1]; ++s)
-        for (int e = 0; e < 3; ++e) ring.push_back(source.elements(e, stars.element[static_cast<std::size_t>(s)]));
+      for (int s = stars.start[k]; s < stars.start[k + 1]; ++s)
+        for (int e = 0; e < 3; ++e) ring.push_back(source.elements(e, stars.triangle[static_cast<std::size_t>(s)]));
     }
     std::ranges::sort(ring);
     ring.erase(std::unique(ring.begin(), ring.end()), ring.end());

@@ -135,10 +135,8 @@ void write_blend(const BlendOptions& o, const global3::Blend3& blend, const io::
   document["frames"] = entries;
   std::ofstream(staged.staging() / "metrics.json") << document.dump(2) << "\n";
   commit_frames3(staged, o.out);
-  std::cerr << "wrote " << frames_count(frames.size()) << " to " << o.out
-            << " (most inverted elements in a frame: " << most_inverted(entries);
-  if (!all_folds.empty()) std::cerr << "; away from the poses' folds: " << most_inverted_away_from_folds(entries);
-  std::cerr << ")\n";
+  std::cerr << "wrote " << frames_count(frames.size()) << " to " << o.out << " ("
+            << inverted_summary(entries, "the poses'") << ")\n";
 }
 
 /// --poses with --weights: one frame per weight vector, all checked before anything is written.

@@ -64,19 +64,19 @@ nlohmann::json metrics3_json(const global3::FrameMetrics3& m) {
           {"measure_ratio", finite_or_null3(m.measure_ratio)}};
 }
 
-long long most_inverted(const nlohmann::json& frames) {
-  long long worst = 0;
-  for (const auto& frame : frames)
-    if (frame.contains("inverted_elements")) worst = std::max(worst, frame["inverted_elements"].get<long long>());
-  return worst;
-}
-
-long long most_inverted_away_from_folds(const nlohmann::json& frames) {
-  long long worst = 0;
-  for (const auto& frame : frames)
-    if (frame.contains("inverted_elements"))
-      worst = std::max(worst, frame["inverted_elements"].get<long long>() - frame.value("inverted_near_folds", 0LL));
-  return worst;
+std::string inverted_summary(const nlohmann::json& frames, const std::string& whose) {
+  long long most = 0, most_away = 0;
+  bool folds = false;
+  for (const auto& frame : frames) {
+    if (!frame.contains("inverted_elements")) continue;
+    const auto inverted = frame["inverted_elements"].get<long long>();
+    folds = folds || frame.contains("inverted_near_folds");
+    most = std::max(most, inverted);
+    most_away = std::max(most_away, inverted - frame.value("inverted_near_folds", 0LL));
+  }
+  std::string summary = "most inverted elements in a frame: " + std::to_string(most);
+  if (folds) summary += "; away from " + whose + " folds: " + std::to_string(most_away);
+  return summary;
 }
 
 void write_viewer3_or_note(const fs::path& folder, const std::string& title, const global3::Mesh3& rest,

@@ -44,10 +44,10 @@ class Frames3Output {
 /// metrics.json's numbers of one frame, null for a non-finite one.
 nlohmann::json metrics3_json(const global3::FrameMetrics3& metrics);
 
-/// The most inverted elements in a frame of metrics.json's "frames" (0 without quality metrics).
-long long most_inverted(const nlohmann::json& frames);
-/// The most of them in a frame away from the folds (not counted in "inverted_near_folds").
-long long most_inverted_away_from_folds(const nlohmann::json& frames);
+/// The closing line's account of metrics.json's "frames": "most inverted elements in a frame: N" (0 without quality
+/// metrics), and where frames count "inverted_near_folds", "; away from <whose> folds: M", the most of them in a
+/// frame that are not.
+std::string inverted_summary(const nlohmann::json& frames, const std::string& whose);
 
 /// OUT/viewer.html of `frames` (labelled by `labels`) into `folder`, or a note on standard error when the
 /// viewer cannot be written (three.js not installed): the frames stand without it.

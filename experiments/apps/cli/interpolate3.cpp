@@ -130,10 +130,8 @@ void run_interpolate3(const Interpolate3Run& run) {
                                    {"frames", frames}};
   std::ofstream(staged.staging() / "metrics.json") << document.dump(2) << "\n";
   commit_frames3(staged, run.out);
-  std::cerr << "wrote " << frames_count(run.times.size()) << " to " << run.out
-            << " (most inverted elements in a frame: " << most_inverted(frames);
-  if (!folds.empty()) std::cerr << "; away from the target's folds: " << most_inverted_away_from_folds(frames);
-  std::cerr << ")\n";
+  std::cerr << "wrote " << frames_count(run.times.size()) << " to " << run.out << " ("
+            << inverted_summary(frames, "the target's") << ")\n";
 }
 
 }  // namespace affinterp::cli
