@@ -137,8 +137,10 @@ double SpaceInterpolation::energy_at(double t) const {
 
 void bind_blend(py::module_& m) {
   py::class_<SpaceBlend>(m, "Blend", R"(N-way blend of K >= 2 compatible 3D poses (Kaji et al.'s Lie-algebra
-parametrisation): each element's map exp(sum_k w_k log R_k) exp(sum_k w_k log S_k) from poses[0], then the
-vertices minimising E^F against these maps, one factorisation for all weight vectors.
+parametrisation): each element's map exp(sum_k w_k log R_k) exp(sum_k w_k log S_k) from poses[0] (on the
+consistent branch each log R_k split into its smoothed carrier and remainder, exp(sum_k w_k carrier_k)
+exp(sum_k w_k remainder_k)), then the vertices minimising E^F against these maps, one factorisation for all weight
+vectors.
 
   poses                a sequence of K (n, 3) float arrays
   F                    (m, 3) triangles or (m, 4) tetrahedra (0-based), shared by the poses

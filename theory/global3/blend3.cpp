@@ -6,6 +6,7 @@
 #include "theory/global3/local_maps3.hpp"
 #include "theory/global3/mesh3_validation.hpp"
 #include "theory/global3/rotation_branches3.hpp"
+#include "theory/global3/rotation_carrier3.hpp"
 #include "theory/local3/local3.hpp"
 
 #include <chrono>
@@ -21,9 +22,12 @@ using global::RefusedProblem;
 struct Blend3::Engine {
   Blend3Options options;
   std::vector<Eigen::Matrix3Xd> omega;  ///< per pose: ω_{k,i}
-  /// Per pose: log S_{k,i}'s upper triangle (xx, xy, xz, yy, yz, zz) in column i, two thirds of the matrix's bytes
-  /// for the frames' pass over every pose.
-  std::vector<Eigen::Matrix<double, 6, Eigen::Dynamic>> log_stretch;
+  /// Per pose, column i: the carrier ω̄_{k,i} and remainder η_{k,i} of ω_{k,i}, then log S_{k,i}'s upper triangle
+  /// (xx, xy, xz, yy, yz, zz; two thirds of the matrix's bytes): one contiguous record per element and pose for the
+  /// frames' pass over every pose.
+  std::vector<Eigen::Matrix<double, 12, Eigen::Dynamic>> logs;
+  /// The poses whose records are not all zero: the rest pose itself (A_{k,i} = I) adds nothing to a frame's sums.
+  std::vector<std::size_t> moving;
   PoissonSystem3 system;
   BlendTargets3 targets;  ///< after the system, which refuses bad constraints with its own messages
   std::size_t threads;
@@ -65,7 +69,7 @@ void Blend3::Engine::decompose(const std::vector<Matrix3d>& maps, const DualGrap
                                const Eigen::Matrix3Xd* previous) {
   const auto m = static_cast<Index>(maps.size());
   Eigen::Matrix3Xd principal(3, m);
-  Eigen::Matrix<double, 6, Eigen::Dynamic> logs(6, m);
+  Eigen::Matrix<double, 12, Eigen::Dynamic> record(12, m);
   const auto elements = static_cast<std::size_t>(m);
   global::for_each_range(elements, global::ranges_for(elements, decompositions_per_thread),
                          [&](std::size_t first, std::size_t last) {
@@ -73,26 +77,34 @@ void Blend3::Engine::decompose(const std::vector<Matrix3d>& maps, const DualGrap
                              const local3::Svd3<double> d = local3::svd3<double>(maps[static_cast<std::size_t>(i)]);
                              principal.col(i) = local3::rotation_log<double>(d.U * d.V.transpose());
                              const Matrix3d L = local3::log_stretch(d);
-                             logs.col(i) << L(0, 0), L(0, 1), L(0, 2), L(1, 1), L(1, 2), L(2, 2);
+                             record.col(i).tail<6>() << L(0, 0), L(0, 1), L(0, 2), L(1, 1), L(1, 2), L(2, 2);
                            }
                          });
-  omega.push_back(options.rotation_branch == global::RotationBranch::consistent
-                      ? consistent_logs(graph, principal, previous)
-                      : principal);
-  log_stretch.push_back(std::move(logs));
+  RotationSplit3 split;
+  if (options.rotation_branch == global::RotationBranch::consistent) {
+    ConsistentLogs consistent = consistent_logs(graph, principal, previous);
+    split = split_rotations(graph, consistent);
+    omega.push_back(std::move(consistent.omega));
+  } else {
+    split = unsplit_rotations(principal);
+    omega.push_back(principal);
+  }
+  record.topRows<3>() = split.carrier;
+  record.middleRows<3>(3) = split.remainder;
+  if (!record.isZero(0)) moving.push_back(logs.size());
+  logs.push_back(std::move(record));
 }
 
 void Blend3::Engine::maps_at(const Eigen::VectorXd& w, std::span<Matrix3d> out, std::size_t threads_) const {
   exp_log_maps(
-      [&](Index first, Index last, std::span<Eigen::Vector3d> Omega, std::span<Matrix3d> Lambda) {
+      [&](Index first, Index last, std::span<Eigen::Vector3d> Omega, std::span<Eigen::Vector3d> Eta,
+          std::span<Matrix3d> Lambda) {
         for (Index i = first; i < last; ++i) {
-          Eigen::Vector3d Omega_i = Eigen::Vector3d::Zero();  // summed in registers, stored once
-          Eigen::Matrix<double, 6, 1> Lambda_i = Eigen::Matrix<double, 6, 1>::Zero();
-          for (std::size_t k = 0; k < omega.size(); ++k) {
-            Omega_i += w[static_cast<Index>(k)] * omega[k].col(i);
-            Lambda_i += w[static_cast<Index>(k)] * log_stretch[k].col(i);
-          }
-          Omega[static_cast<std::size_t>(i - first)] = Omega_i;
+          Eigen::Matrix<double, 12, 1> x = Eigen::Matrix<double, 12, 1>::Zero();  // summed in registers
+          for (const std::size_t k : moving) x += w[static_cast<Index>(k)] * logs[k].col(i);
+          Omega[static_cast<std::size_t>(i - first)] = x.head<3>();
+          Eta[static_cast<std::size_t>(i - first)] = x.segment<3>(3);
+          const auto Lambda_i = x.tail<6>();
           Lambda[static_cast<std::size_t>(i - first)] << Lambda_i[0], Lambda_i[1], Lambda_i[2],  //
               Lambda_i[1], Lambda_i[3], Lambda_i[4],                                             //
               Lambda_i[2], Lambda_i[4], Lambda_i[5];
@@ -104,7 +116,7 @@ void Blend3::Engine::maps_at(const Eigen::VectorXd& w, std::span<Matrix3d> out, 
 Eigen::Matrix3Xd Blend3::Engine::frame(const Eigen::VectorXd& w, std::size_t threads_, FrameTimings* timings) const {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  std::vector<Matrix3d> A(static_cast<std::size_t>(log_stretch.front().cols()));
+  std::vector<Matrix3d> A(static_cast<std::size_t>(logs.front().cols()));
   maps_at(w, A, threads_);
   const auto mapped = Clock::now();
   PoissonSystem3::Block b = system.right_hand_side(A, threads_);
@@ -157,7 +169,7 @@ std::vector<Eigen::Matrix3Xd> Blend3::vertices_at(const std::vector<Eigen::Vecto
 
 std::vector<Matrix3d> Blend3::local_maps_at(const Eigen::VectorXd& w) const {
   require_valid_weights(w);
-  std::vector<Matrix3d> A(static_cast<std::size_t>(engine_->log_stretch.front().cols()));
+  std::vector<Matrix3d> A(static_cast<std::size_t>(engine_->logs.front().cols()));
   engine_->maps_at(w, A, engine_->threads);
   return A;
 }

@@ -2,8 +2,10 @@
 // N-way blending of K ≥ 2 compatible poses (3D; Kaji et al.'s Lie-algebra parametrisation, the thesis's
 // reference [6]): with A_{k,i} = R_{k,i} S_{k,i} the map of element i from the rest mesh to pose k
 // (element_maps3.hpp), ω_{k,i} a logarithm of R_{k,i} and log S_{k,i} the principal one, a weight vector w gives
-//     A_i(w) = exp(Σ_k w_k [ω_{k,i}]×) · exp(Σ_k w_k log S_{k,i}),
-// (the symmetric exponentials through sym3::exp_batched: local_maps3.hpp), then the vertices minimising E^F
+//     A_i(w) = exp(Σ_k w_k [ω̄_{k,i}]×) · exp(Σ_k w_k [η_{k,i}]×) · exp(Σ_k w_k log S_{k,i}),
+// with ω̄_{k,i} and η_{k,i} the carrier and remainder of ω_{k,i} on the consistent branch (rotation_carrier3.hpp;
+// on the principal branch ω̄ = ω and η = 0; the symmetric exponentials through sym3::exp_batched: local_maps3.hpp),
+// then the vertices minimising E^F
 // against these maps (poisson_system3.hpp), translated so that the barycentre is Σ_k w_k (pose k's barycentre),
 // pinned vertices at Σ_k w_k (pose k's vertex). E^F's matrix depends on the rest mesh only: one factorisation for
 // every weight vector. With w = e_k the maps are A_{k,i} and the frame is pose k (E^F is zero there).

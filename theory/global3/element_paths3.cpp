@@ -13,19 +13,28 @@ using global::LocalHomotopy;
 
 ElementPaths3::ElementPaths3(const std::vector<Matrix3d>& maps, LocalHomotopy homotopy, global::RotationBranch branch,
                              const DualGraph3& graph)
-    : homotopy_(homotopy) {
+    : homotopy_(homotopy), branch_(branch) {
   const Eigen::Matrix3Xd principal = decompose(maps);
-  use_logs(branch == global::RotationBranch::consistent ? consistent_logs(graph, principal) : principal, principal);
+  if (branch != global::RotationBranch::consistent) {
+    use_logs(principal, principal);
+    if (turns()) split_ = unsplit_rotations(omega_);
+    return;
+  }
+  const ConsistentLogs logs = consistent_logs(graph, principal);
+  use_logs(logs.omega, principal);
+  if (turns()) split_ = split_rotations(graph, logs);
 }
 
-ElementPaths3::ElementPaths3(const std::vector<Matrix3d>& maps, LocalHomotopy homotopy,
-                             const Eigen::Matrix3Xd& reference)
-    : homotopy_(homotopy) {
+ElementPaths3::ElementPaths3(const std::vector<Matrix3d>& maps, LocalHomotopy homotopy, const ElementPaths3& forward)
+    : homotopy_(homotopy), branch_(forward.branch_) {
   const Eigen::Matrix3Xd principal = decompose(maps);
   Eigen::Matrix3Xd chosen(3, principal.cols());
   for (Index i = 0; i < principal.cols(); ++i)
-    chosen.col(i) = local3::nearest_log<double>(principal.col(i), reference.col(i));
+    chosen.col(i) = local3::nearest_log<double>(principal.col(i), Eigen::Vector3d(-forward.omega_.col(i)));
   use_logs(chosen, principal);
+  if (!turns()) return;
+  split_ = branch_ == global::RotationBranch::consistent ? split_along(-forward.split_.carrier, omega_)
+                                                         : unsplit_rotations(omega_);
 }
 
 Eigen::Matrix3Xd ElementPaths3::decompose(const std::vector<Matrix3d>& maps) {
@@ -63,9 +72,11 @@ void ElementPaths3::maps_at(double t, std::span<Matrix3d> out, std::size_t threa
                             const sym3::SymExpBatch& exp) const {
   if (homotopy_ == LocalHomotopy::exp) {
     exp_log_maps(
-        [&](Index first, Index last, std::span<Eigen::Vector3d> Omega, std::span<Matrix3d> Lambda) {
+        [&](Index first, Index last, std::span<Eigen::Vector3d> Omega, std::span<Eigen::Vector3d> Eta,
+            std::span<Matrix3d> Lambda) {
           for (Index i = first; i < last; ++i) {
-            Omega[static_cast<std::size_t>(i - first)] = t * omega_.col(i);
+            Omega[static_cast<std::size_t>(i - first)] = t * split_.carrier.col(i);
+            Eta[static_cast<std::size_t>(i - first)] = t * split_.remainder.col(i);
             Lambda[static_cast<std::size_t>(i - first)] = t * stretch_[static_cast<std::size_t>(i)];
           }
         },
@@ -79,8 +90,10 @@ void ElementPaths3::maps_at(double t, std::span<Matrix3d> out, std::size_t threa
         case LocalHomotopy::linear:
           out[s] = local3::LinearHomotopy3<double>{A_[s]}(t);
           break;
-        case LocalHomotopy::polar:
-          out[s] = local3::PolarHomotopy3<double>{omega_.col(i), stretch_[s]}(t);
+        case LocalHomotopy::polar:  // R_i(t)((1 − t)I + tS_i)
+          out[s] = local3::rotation_exp<double>(Eigen::Vector3d(t * split_.carrier.col(i))) *
+                   (local3::rotation_exp<double>(Eigen::Vector3d(t * split_.remainder.col(i))) *
+                    ((1 - t) * Matrix3d::Identity() + t * stretch_[s]));
           break;
         default:
           out[s] = local3::SvdHomotopy3<double>{omega_U_.col(i), sigma_.col(i), omega_V_.col(i)}(t);

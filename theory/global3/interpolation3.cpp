@@ -46,8 +46,7 @@ struct Interpolation3::Engine {
         system(rest_poses(s, t, options.symmetric), options.area_weighted, options.constraints, options.back_end),
         targets(options.constraints, s.vertices, t.vertices),
         threads(frame_threads3(options.frame_threads, s)) {
-    if (options.symmetric)
-      reverse.emplace(element_maps(t, s), options.homotopy, Eigen::Matrix3Xd(-paths.rotation_logs()));
+    if (options.symmetric) reverse.emplace(element_maps(t, s), options.homotopy, paths);
   }
 
   void require_time(double t) const {
@@ -120,6 +119,7 @@ double Interpolation3::energy_at(double t, const Eigen::Matrix3Xd& v) const {
 }
 
 const Eigen::Matrix3Xd& Interpolation3::rotation_logs() const { return engine_->paths.rotation_logs(); }
+const RotationSplit3& Interpolation3::rotation_split() const { return engine_->paths.rotation_split(); }
 const PoissonSystem3& Interpolation3::system() const { return engine_->system; }
 const Interpolation3Options& Interpolation3::options() const { return engine_->options; }
 

@@ -27,6 +27,7 @@
 #include "theory/global3/frame_timings.hpp"
 #include "theory/global3/mesh3.hpp"
 #include "theory/global3/poisson_system3.hpp"
+#include "theory/global3/rotation_carrier3.hpp"
 #include "theory/sym3/exp_batch.hpp"
 
 #include <Eigen/Core>
@@ -87,6 +88,8 @@ class Interpolation3 {
   double energy_at(double t, const Eigen::Matrix3Xd& v) const;
   /// ω_i (column i): the rotation logarithm of each element after the branch choice.
   const Eigen::Matrix3Xd& rotation_logs() const;
+  /// Polar and exp-log: ω_i's carrier and remainder, along which element i turns (rotation_carrier3.hpp).
+  const RotationSplit3& rotation_split() const;
   /// The factored system, for benchmarks timing its steps.
   const PoissonSystem3& system() const;
   const Interpolation3Options& options() const;

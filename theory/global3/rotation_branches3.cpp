@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <functional>
+#include <numbers>
 #include <queue>
 #include <tuple>
 #include <utility>
@@ -77,18 +78,25 @@ DualGraph3 dual_graph3(const Eigen::MatrixXi& elements) {
 
 namespace {
 
+constexpr double pi = std::numbers::pi;
+
 /// The walk's state: each element's logarithm, its reference for its children, and the frontier, the unvisited
 /// neighbours of visited elements keyed by how far their nearest representative lies from that reference.
 struct Walk {
   const DualGraph3& graph;
   const Eigen::Matrix3Xd& principal;
-  Eigen::Matrix3Xd omega, reference;
+  Eigen::Matrix3Xd omega, reference, seed;
   std::vector<bool> visited;
   using Step = std::tuple<double, int, int>;  ///< (distance, child, parent): smallest first, ties by index
   std::priority_queue<Step, std::vector<Step>, std::greater<Step>> frontier;
 
   Walk(const DualGraph3& g, const Eigen::Matrix3Xd& p)
-      : graph(g), principal(p), omega(p), reference(3, p.cols()), visited(static_cast<std::size_t>(p.cols()), false) {}
+      : graph(g),
+        principal(p),
+        omega(p),
+        reference(3, p.cols()),
+        seed(3, p.cols()),
+        visited(static_cast<std::size_t>(p.cols()), false) {}
 
   void push_neighbours(int parent) {
     const Eigen::Vector3d r = reference.col(parent);
@@ -103,23 +111,24 @@ struct Walk {
   void visit(int child, int parent) {
     visited[static_cast<std::size_t>(child)] = true;
     omega.col(child) = local3::nearest_log<double>(principal.col(child), reference.col(parent));
-    const bool reliable = (omega.col(child) - reference.col(parent)).norm() <= reliable_step;
-    reference.col(child) = reliable ? omega.col(child) : reference.col(parent);
+    const double step = (omega.col(child) - reference.col(parent)).norm();
+    reference.col(child) = step <= reliable_step ? omega.col(child) : reference.col(parent);
+    seed.col(child) = step <= pi ? omega.col(child) : reference.col(parent);
     push_neighbours(child);
   }
 };
 
 }  // namespace
 
-Eigen::Matrix3Xd consistent_logs(const DualGraph3& graph, const Eigen::Matrix3Xd& principal,
-                                 const Eigen::Matrix3Xd* root_reference) {
+ConsistentLogs consistent_logs(const DualGraph3& graph, const Eigen::Matrix3Xd& principal,
+                               const Eigen::Matrix3Xd* root_reference) {
   Walk walk(graph, principal);
   for (Eigen::Index root = 0; root < principal.cols(); ++root) {
     if (walk.visited[static_cast<std::size_t>(root)]) continue;
     walk.visited[static_cast<std::size_t>(root)] = true;
     if (root_reference)
       walk.omega.col(root) = local3::nearest_log<double>(principal.col(root), root_reference->col(root));
-    walk.reference.col(root) = walk.omega.col(root);
+    walk.reference.col(root) = walk.seed.col(root) = walk.omega.col(root);
     walk.push_neighbours(static_cast<int>(root));
     while (!walk.frontier.empty()) {
       const auto [distance, child, parent] = walk.frontier.top();
@@ -127,7 +136,7 @@ Eigen::Matrix3Xd consistent_logs(const DualGraph3& graph, const Eigen::Matrix3Xd
       if (!walk.visited[static_cast<std::size_t>(child)]) walk.visit(child, parent);
     }
   }
-  return walk.omega;
+  return {std::move(walk.omega), std::move(walk.seed)};
 }
 
 }  // namespace affinterp::global3

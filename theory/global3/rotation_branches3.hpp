@@ -19,9 +19,10 @@
 // them a small tilt of the rotation needs a large change of ω, and an element turned by a full turn about a slightly
 // tilted axis (R ≈ I, as in a twisted bar's elements at twist 2π, sheared by the twist) has all its representatives
 // on the line of its tilt axis, none near its neighbours' ≈ 2π along the bar. Such an element gets its nearest
-// representative (no choice makes its own path right), but its children are compared with its parent's reference,
-// so that the walk carries the turn count past it. Neighbours on a mesh fine enough for its motion differ by far
-// less than 1 rad; an element on the singular sphere by about 2π·sin(the angle between the axes).
+// representative (no choice makes its own path right: rotation_carrier3.hpp turns it with its neighbours), but its
+// children are compared with its parent's reference, so that the walk carries the turn count past it. Neighbours on a
+// mesh fine enough for its motion differ by far less than 1 rad; an element on the singular sphere by about 2π·sin(the
+// angle between the axes).
 #include <Eigen/Core>
 
 #include <vector>
@@ -41,10 +42,19 @@ inline constexpr double reliable_step = 1.0;
 /// The dual graph of a well-formed element list (3 or 4 rows).
 DualGraph3 dual_graph3(const Eigen::MatrixXi& elements);
 
+/// Each element's logarithm on its consistent branch, and the field the rotation paths' carrier smooths
+/// (rotation_carrier3.hpp).
+struct ConsistentLogs {
+  Eigen::Matrix3Xd omega;  ///< ω_i, column i
+  /// ω_i where it lies within π of its parent's reference, else that reference: without the elements none of whose
+  /// logarithms is near their neighbours' (at a twisted bar's full turn, every logarithm across the bar).
+  Eigen::Matrix3Xd seed;
+};
+
 /// The principal logarithms `principal` (column i: ω_i, |ω_i| ≤ π) moved to consistent branches as above. The
 /// root of each piece takes its representative nearest root_reference's column (none: the principal one), which
 /// is how the blend aligns one pose's field with the previous pose's (blend3.hpp).
-Eigen::Matrix3Xd consistent_logs(const DualGraph3& graph, const Eigen::Matrix3Xd& principal,
-                                 const Eigen::Matrix3Xd* root_reference = nullptr);
+ConsistentLogs consistent_logs(const DualGraph3& graph, const Eigen::Matrix3Xd& principal,
+                               const Eigen::Matrix3Xd* root_reference = nullptr);
 
 }  // namespace affinterp::global3

@@ -4,6 +4,7 @@
 // theory/local/rotation.hpp's R_θ and principal angle. Templated over the scalar (double, long double, and
 // Boost.Multiprecision floats with ADL sin/cos/atan2/sqrt).
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <boost/math/constants/constants.hpp>
 
 #include <cmath>
@@ -45,6 +46,36 @@ Mat3<Scalar> rotation_exp(const Vec3<Scalar>& omega) {
     b = sinc_half * sinc_half / 2;
   }
   return Mat3<Scalar>::Identity() + a * K + b * (K * K);
+}
+
+/// exp [ω]× exp [η]×, the rotation by η then by ω, through unit quaternions: q(ω) = (cos(θ/2), (sin(θ/2)/θ) ω) with
+/// θ = |ω| (its limit (1, ω/2) at θ = 0), the product q = q(ω) q(η) written out, and R = (w² − |v|²) I + 2 v vᵀ +
+/// 2w [v]× for q = (w, v). One sine and one cosine a factor, as rotation_exp, and no 3 × 3 product: the rotation
+/// paths' carrier and remainder (theory/global3/rotation_carrier3.hpp) in every frame.
+template <class Scalar>
+Mat3<Scalar> rotation_exp_product(const Vec3<Scalar>& omega, const Vec3<Scalar>& eta) {
+  using std::cos;
+  using std::sin;
+  const auto half_turn = [](const Vec3<Scalar>& x, Scalar& w, Vec3<Scalar>& v) {
+    const Scalar theta = x.norm();
+    Scalar scale(0.5);
+    w = Scalar(1);
+    if (theta > Scalar(0)) {
+      const Scalar half = theta / 2;
+      scale = sin(half) / theta;
+      w = cos(half);
+    }
+    v = scale * x;
+  };
+  Scalar a, b;
+  Vec3<Scalar> u, v;
+  half_turn(omega, a, u);
+  half_turn(eta, b, v);
+  const Scalar w = a * b - u.dot(v);
+  const Vec3<Scalar> q = a * v + b * u + u.cross(v);
+  Mat3<Scalar> R = (w * w - q.squaredNorm()) * Mat3<Scalar>::Identity() + 2 * (q * q.transpose());
+  R += 2 * w * cross_matrix(q);
+  return R;
 }
 
 /// The principal logarithm of R ∈ SO(3): ω with exp [ω]× = R and θ = |ω| ∈ [0, π]. θ = atan2(|v|, c) with

@@ -201,7 +201,8 @@ void run_keys(const BlendOptions& o) {
 constexpr const char* blend_description =
     "Blend K >= 2 compatible 3D poses (surfaces .obj/.off/.ply/.stl or MEDIT .mesh tetrahedra): with --poses A B C "
     "--weights 0.2,0.5,0.3 one frame per --weights vector, each element's map exp(sum_k w_k log R_k) "
-    "exp(sum_k w_k log S_k) from the first pose, then the E^F solve (weights off the simplex only with "
+    "exp(sum_k w_k log S_k) from the first pose (with --rotation-branch consistent, the default, each log R_k turned "
+    "along its smoothed carrier, then its remainder), then the E^F solve (weights off the simplex only with "
     "--allow-extrapolation); with --keys A:0 B:0.5 C:1 frames through the poses at those times (--times or "
     "--frames), each segment the blend of its two keys (continuous at the keys). Writes OUT/frame_0000.obj (.mesh "
     "for tetrahedra) ... or OUT/frames.npy (frames, n, 3), OUT/metrics.json (per frame the weights and quality "
