@@ -1,8 +1,9 @@
 """The Python module's 3D side: Interpolation on (n, 3) vertices with tetrahedra or triangles (the 3D engine,
 theory/global3) and Blend over K poses, on small generated meshes (a tetrahedralised bar, a tube surface): the
-ends are the source and the target, a blend at e_k is pose k, the same frames as the CLI writes, and bad input
-raises a one-line ValueError. Run by ctest (label unit) as test_affinterp.py is."""
+ends are the source and the target, a blend at e_k is pose k, the same frames and metrics as the CLI writes, and bad
+input raises a one-line ValueError. Run by ctest (label unit) as test_affinterp.py is."""
 import itertools
+import json
 import os
 import subprocess
 
@@ -46,6 +47,19 @@ def twisted(V, turn, length=4.0):
     phi = turn * V[:, 0] / length
     c, s = np.cos(phi), np.sin(phi)
     return np.stack([V[:, 0], c * V[:, 1] - s * V[:, 2], s * V[:, 1] + c * V[:, 2]], axis=1)
+
+
+def write_off(path, V, F):
+    with open(path, "w") as f:
+        f.write(f"OFF\n{len(V)} {len(F)} 0\n")
+        f.writelines(f"{x!r} {y!r} {z!r}\n" for x, y, z in V)
+        f.writelines(f"3 {a} {b} {c}\n" for a, b, c in F)
+
+
+def assert_entry_is_the_clis(metrics, entry):
+    """Every key of a metrics_at dict is one of the CLI's metrics.json entry for that frame, with its value."""
+    for key, value in metrics.items():
+        assert entry[key] == value, (key, value, entry[key])
 
 
 def one_line_value_error(call, *words):
@@ -92,6 +106,32 @@ def test_interpolation_matches_the_cli(tmp_path):
                                   affinterp.Interpolation(V, W, T, symmetric=True).frames([0, 0.5, 1]))
 
 
+def test_metrics_are_the_clis_with_the_targets_folds(tmp_path):
+    V, F = tube()
+    W = twisted(V, 0.5)
+    W[16, 0] += 1.6  # vertex 16 dragged past the next ring: the triangles around it turned over within the surface
+    files = [str(tmp_path / f"{name}.off") for name in "abc"]
+    for file, points in zip(files, (V, W, twisted(V, 1.0))):
+        write_off(file, points, F)
+    subprocess.run([CLI, "interpolate", "--source", files[0], "--target", files[1], "--out", tmp_path / "run",
+                    "--frames", "3", "--no-figures"], check=True, capture_output=True)
+    with open(tmp_path / "run" / "metrics.json") as f:
+        entries = json.load(f)["frames"]
+    interpolation = affinterp.Interpolation(V, W, F)
+    for entry in entries:
+        metrics = interpolation.metrics_at(entry["t"])
+        assert {"t", "energy", "inverted_elements", "inverted_near_folds", "measure_ratio"} <= metrics.keys()
+        assert_entry_is_the_clis(metrics, entry)
+    subprocess.run([CLI, "blend", "--poses"] + files + ["--weights", "0.2,0.5,0.3", "--out", tmp_path / "blend",
+                    "--no-figures"], check=True, capture_output=True)
+    with open(tmp_path / "blend" / "metrics.json") as f:
+        entry = json.load(f)["frames"][0]
+    metrics = affinterp.Blend([V, W, twisted(V, 1.0)], F).metrics_at([0.2, 0.5, 0.3])
+    assert {"weights", "inverted_elements", "inverted_near_folds"} <= metrics.keys()
+    assert_entry_is_the_clis(metrics, entry)
+    assert "inverted_near_folds" not in affinterp.Interpolation(V, twisted(V, 0.5), F).metrics_at(0.5)
+
+
 def test_a_vertex_locus_of_large_weight_is_followed():
     V, T = bar()
     W = twisted(V, 1.0)
@@ -134,6 +174,7 @@ def test_bad_input_raises_one_line_value_errors():
     one_line_value_error(lambda: affinterp.Interpolation(V, W, T).vertices_at(2.0), "time_range")
     blend = affinterp.Blend([V, W, twisted(V, 2.0)], T)
     one_line_value_error(lambda: blend.vertices_at([0.5, 0.5]), "3 weights")
+    one_line_value_error(lambda: blend.metrics_at([[0.2, 0.5, 0.3]]), "w", "(k,)")
     one_line_value_error(lambda: blend.vertices_at([-1, 2, 0]), "non-negative")
     one_line_value_error(lambda: affinterp.Blend([V], T), "two poses")
     one_line_value_error(lambda: affinterp.Blend([V, W[:, :2]], T), "poses[1]", "(n, 3)")

@@ -1,6 +1,7 @@
 """The Python module affinterp (experiments/python): arrays in and out, the same vertices as the CLI, the
 local theory, 3x3 symmetric functions, compatible pairs, and one-line ValueErrors on bad input.
 Run by ctest (label unit) with PYTHONPATH at the built module, AFFINTERP_CLI and AFFINTERP_SOURCE_DIR set."""
+import json
 import os
 import re
 import subprocess
@@ -70,8 +71,15 @@ def test_python_and_cli_give_the_same_vertices(tmp_path, options, keywords):
                     "--times", "0,0.3,1", "--no-figures"] + options, check=True, capture_output=True)
     V0, F = affinterp.read_mesh(source)
     V1, _ = affinterp.read_mesh(target)
-    python = affinterp.Interpolation(V0, V1, F, **keywords).vertices_at(0.3)
-    np.testing.assert_array_equal(python, read_obj_vertices(tmp_path / "run" / "frame_0001.obj"))
+    interpolation = affinterp.Interpolation(V0, V1, F, **keywords)
+    np.testing.assert_array_equal(interpolation.vertices_at(0.3), read_obj_vertices(tmp_path / "run" / "frame_0001.obj"))
+    # metrics_at: metrics.json's entry for the frame, in its words and with its values
+    with open(tmp_path / "run" / "metrics.json") as f:
+        entry = json.load(f)["frames"][1]
+    metrics = interpolation.metrics_at(0.3)
+    assert {"t", "energy", "flipped_triangles", "mean_distortion"} <= metrics.keys()
+    for key, value in metrics.items():
+        assert entry[key] == value, (key, value, entry[key])
 
 
 def python_defaults():
@@ -93,7 +101,6 @@ def test_python_keywords_are_the_cli_options_with_the_same_defaults(tmp_path):
     subprocess.run([CLI, "interpolate", "--source", str(tmp_path / "pair" / "source.obj"), "--target",
                     str(tmp_path / "pair" / "target.obj"), "--out", str(tmp_path / "run"), "--frames", "2",
                     "--no-figures"], check=True, capture_output=True)
-    import json
     with open(tmp_path / "run" / "metrics.json") as f:
         cli = json.load(f)["options"]
     defaults = python_defaults()

@@ -2,13 +2,16 @@
 // the engine's options under the names of `affinterp interpolate` and metrics.json, their defaults read from
 // global::InterpolationOptions{}, their rules the engine's; the request and the input checks are the CLI's
 // (experiments/inputs/interpolation_request.hpp, mesh_pair.hpp), so that Python and the CLI give the same vertices.
+#include "experiments/inputs/frame_metrics_json.hpp"
 #include "experiments/inputs/interpolation_request.hpp"
 #include "experiments/inputs/mesh_file.hpp"
 #include "experiments/inputs/mesh_pair.hpp"
 #include "experiments/python/arrays.hpp"
 #include "experiments/python/bindings.hpp"
 #include "experiments/python/engine_errors.hpp"
+#include "experiments/python/json_dict.hpp"
 #include "experiments/python/space_binding.hpp"
+#include "theory/global/metrics.hpp"
 
 #include <pybind11/stl.h>
 
@@ -93,6 +96,7 @@ class Interpolation {
       value_error(e.what());
     }
     vertex_count_ = pair.source.vertex_count();
+    source_ = std::move(pair.source);
   }
 
   py::array_t<double> vertices_at(double t) const {
@@ -124,6 +128,19 @@ class Interpolation {
     return engine_->energy_at(t, frame(t)).total;
   }
 
+  /// metrics.json's entry of the frame at t: t, energy and the quality numbers (io::metrics_json).
+  py::object metrics_at(double t) const {
+    if (space_) return space_->metrics_at(t);
+    nlohmann::json entry;
+    {
+      py::gil_scoped_release unlocked;
+      const Eigen::Matrix2Xd v = frame(t);
+      entry = {{"t", t}, {"energy", io::finite_or_null(engine_->energy_at(t, v).total)}};
+      entry.update(io::metrics_json(global::frame_metrics(source_, v)));
+    }
+    return dict_of(entry);
+  }
+
  private:
   Eigen::Matrix2Xd frame(double t) const {
     return translated([&] { return engine_->vertices_at(t); });
@@ -139,6 +156,7 @@ class Interpolation {
   }
 
   std::unique_ptr<global::Interpolation> engine_;
+  global::Mesh source_;                        ///< as the engine reoriented it, for the metrics
   std::unique_ptr<SpaceInterpolation> space_;  ///< set instead of engine_ for 3D meshes
   Eigen::Index vertex_count_ = 0;
 };
@@ -219,7 +237,12 @@ void bind_interpolation(py::module_& m) {
       .def("frames", &Interpolation::frames, py::arg("times"),
            "v(t) at each of `times` as a (k, n, 2) array (frame k is vertices_at(times[k])).")
       .def("energy_at", &Interpolation::energy_at, py::arg("t"),
-           "E_t (E'(t) when symmetric) at its minimiser v(t), as metrics.json's \"energy\".");
+           "E_t (E'(t) when symmetric) at its minimiser v(t), as metrics.json's \"energy\".")
+      .def("metrics_at", &Interpolation::metrics_at, py::arg("t"),
+           "The frame at t's entry of `affinterp interpolate`'s metrics.json as a dict: t, energy and the quality "
+           "numbers (2D: flipped_triangles, min_det, max_det, max_distortion, mean_distortion, area_ratio; 3D: "
+           "inverted_elements, min_ratio, max_ratio, max_distortion, mean_distortion, measure_ratio, and "
+           "inverted_near_folds when a surface target folds triangles within the surface); None where not finite.");
 }
 
 }  // namespace affinterp::python

@@ -1,13 +1,19 @@
 #include "experiments/python/space_binding.hpp"
 
 #include "experiments/inputs/constraint_spec.hpp"
+#include "experiments/inputs/frame_metrics_json.hpp"
 #include "experiments/inputs/mesh3_poses.hpp"
 #include "experiments/inputs/mesh_file.hpp"
 #include "experiments/python/bindings.hpp"
 #include "experiments/python/engine_errors.hpp"
+#include "experiments/python/json_dict.hpp"
 #include "theory/global3/blend3.hpp"
+#include "theory/global3/frame_metrics3.hpp"
+#include "theory/global3/target_folds3.hpp"
 
 #include <pybind11/stl.h>
+
+#include <mutex>
 
 namespace affinterp::python {
 
@@ -60,6 +66,7 @@ class SpaceBlend {
     options.rotation_branch = global::parse_option<global::RotationBranch>(rotation_branch);
     engine_ = translated([&] { return std::make_unique<global3::Blend3>(meshes, options); });
     vertex_count_ = meshes[0].vertex_count();
+    poses_ = std::move(meshes);
   }
 
   /// w of shape (K,): the (n, 3) blend; (frames, K): (frames, n, 3).
@@ -80,8 +87,38 @@ class SpaceBlend {
     return to_points(std::move(frames[0]));
   }
 
+  /// `affinterp blend`'s metrics.json entry of the blend for w, shape (K,), as a dict.
+  py::object metrics_at(const py::object& w) const {
+    const DoubleArray weights = DoubleArray::ensure(w);
+    if (!weights || weights.ndim() != 1) value_error("w: expected shape (k,)");
+    check_finite(weights, "w");
+    const Eigen::VectorXd vector = Eigen::Map<const Eigen::VectorXd>(weights.data(), weights.shape(0));
+    nlohmann::json entry;
+    {
+      py::gil_scoped_release unlocked;
+      std::call_once(folds_found_, [&] {  // the CLI's mask: at or beside the folds of any pose against the first
+        std::vector<Eigen::Index> folds;
+        for (std::size_t k = 1; k < poses_.size(); ++k) {
+          const std::vector<Eigen::Index> pose = global3::target_folds(poses_[0], poses_[k]);
+          folds.insert(folds.end(), pose.begin(), pose.end());
+        }
+        if (!folds.empty()) near_folds_ = global3::near_folds(poses_[0], folds);
+      });
+      translated([&] {
+        const Eigen::Matrix3Xd v = engine_->vertices_at(vector);
+        entry = {{"weights", std::vector<double>(vector.data(), vector.data() + vector.size())}};
+        entry.update(io::metrics3_json(
+            global3::frame_metrics3(poses_[0], v, engine_->local_maps_at(vector), near_folds_), !near_folds_.empty()));
+      });
+    }
+    return dict_of(entry);
+  }
+
  private:
   std::unique_ptr<global3::Blend3> engine_;
+  std::vector<global3::Mesh3> poses_;              ///< for the metrics
+  mutable std::vector<unsigned char> near_folds_;  ///< as SpaceInterpolation's, over every pose's folds
+  mutable std::once_flag folds_found_;
   Eigen::Index vertex_count_ = 0;
 };
 
@@ -101,6 +138,7 @@ SpaceInterpolation::SpaceInterpolation(const py::object& V0, const py::object& V
   const global3::Interpolation3Options options = options3(keywords, source.vertex_count());
   engine_ = translated([&] { return std::make_unique<global3::Interpolation3>(source, target, options); });
   vertex_count_ = source.vertex_count();
+  source_ = source, target_ = target;
 }
 
 void SpaceInterpolation::check_time(double t) const {
@@ -135,6 +173,25 @@ double SpaceInterpolation::energy_at(double t) const {
   return translated([&] { return engine_->energy_at(t, engine_->vertices_at(t)); });
 }
 
+py::object SpaceInterpolation::metrics_at(double t) const {
+  check_time(t);
+  nlohmann::json entry;
+  {
+    py::gil_scoped_release unlocked;
+    std::call_once(folds_found_, [&] {
+      const std::vector<Eigen::Index> folds = global3::target_folds(source_, target_);
+      if (!folds.empty()) near_folds_ = global3::near_folds(source_, folds);
+    });
+    translated([&] {
+      const Eigen::Matrix3Xd v = engine_->vertices_at(t);
+      entry = {{"t", t}, {"energy", io::finite_or_null(engine_->energy_at(t, v))}};
+      entry.update(io::metrics3_json(global3::frame_metrics3(source_, v, engine_->local_maps_at(t), near_folds_),
+                                     !near_folds_.empty()));
+    });
+  }
+  return dict_of(entry);
+}
+
 void bind_blend(py::module_& m) {
   py::class_<SpaceBlend>(m, "Blend", R"(N-way blend of K >= 2 compatible 3D poses (Kaji et al.'s Lie-algebra
 parametrisation): each element's map exp(sum_k w_k log R_k) exp(sum_k w_k log S_k) from poses[0] (on the
@@ -154,7 +211,12 @@ Bad input raises ValueError with a one-line message.)")
            py::arg("area_weighted") = true)
       .def("vertices_at", &SpaceBlend::vertices_at, py::arg("w"),
            "The blend for weights w: shape (K,) gives (n, 3), shape (frames, K) gives (frames, n, 3). ValueError "
-           "for a wrong count or, without allow_extrapolation, weights off the simplex.");
+           "for a wrong count or, without allow_extrapolation, weights off the simplex.")
+      .def("metrics_at", &SpaceBlend::metrics_at, py::arg("w"),
+           "The blend for weights w (shape (K,))'s entry of `affinterp blend`'s metrics.json as a dict: weights, "
+           "inverted_elements, min_ratio, max_ratio, max_distortion, mean_distortion, measure_ratio, and "
+           "inverted_near_folds when a surface pose folds triangles within the surface against the first; None "
+           "where not finite.");
 }
 
 }  // namespace affinterp::python

@@ -6,6 +6,7 @@
 #include "theory/global3/interpolation3.hpp"
 
 #include <memory>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,11 +32,17 @@ class SpaceInterpolation {
   py::array_t<double> vertices_at(double t) const;            ///< (n, 3)
   py::array_t<double> frames(const py::object& times) const;  ///< (k, n, 3)
   double energy_at(double t) const;
+  py::object metrics_at(double t) const;  ///< metrics.json's entry of the frame at t, as a dict
 
  private:
   void check_time(double t) const;
 
   std::unique_ptr<global3::Interpolation3> engine_;
+  global3::Mesh3 source_, target_;  ///< for the metrics
+  /// The elements at or beside the target's folds (target_folds3.hpp), found on the first metrics_at; empty when
+  /// it folds none.
+  mutable std::vector<unsigned char> near_folds_;
+  mutable std::once_flag folds_found_;
   Eigen::Index vertex_count_ = 0;
   std::pair<double, double> time_range_;
 };

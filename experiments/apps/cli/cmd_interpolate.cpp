@@ -6,6 +6,7 @@
 #include "experiments/apps/cli/enum_option.hpp"
 #include "experiments/apps/cli/interpolate3.hpp"
 #include "experiments/inputs/constraint_spec.hpp"
+#include "experiments/inputs/frame_metrics_json.hpp"
 #include "experiments/inputs/frames_npy.hpp"
 #include "experiments/inputs/interpolation_request.hpp"
 #include "experiments/inputs/mesh3_file.hpp"
@@ -131,18 +132,6 @@ std::pair<global::InterpolationOptions, std::vector<double>> engine_options(cons
   }
 }
 
-/// A number for JSON: null when not finite (a singular B_i gives σ1/σ2 = +∞).
-nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
-
-nlohmann::json metrics_json(const global::FrameMetrics& m) {
-  return {{"flipped_triangles", m.flipped_triangles},
-          {"min_det", finite_or_null(m.min_det)},
-          {"max_det", finite_or_null(m.max_det)},
-          {"max_distortion", finite_or_null(m.max_distortion)},
-          {"mean_distortion", finite_or_null(m.mean_distortion)},
-          {"area_ratio", finite_or_null(m.area_ratio)}};
-}
-
 /// metrics.json's "energy_parts": for a blend the E^F and E^R shares, for a symmetrised energy E(t) and
 /// E^{-1}(1 − t), and the constraints C; each split plus C sums to "energy".
 nlohmann::json energy_parts_json(const global::FrameEnergy& e, const global::InterpolationOptions& options) {
@@ -194,7 +183,7 @@ class FrameRecorder {
     if (energies_) record_energy(k, t, entry);
     if (quality_) {
       const global::FrameMetrics metrics = global::frame_metrics(pair_.source, frame_.vertices);
-      entry.update(metrics_json(metrics));
+      entry.update(io::metrics_json(metrics));
       if (o_.figures) viewer_.metrics.push_back(metrics);
     }
     frames_.push_back(std::move(entry));
@@ -212,7 +201,7 @@ class FrameRecorder {
  private:
   void record_energy(int k, double t, nlohmann::json& entry) {
     const global::FrameEnergy energy = interpolation_.energy_at(t, frame_.vertices);
-    entry["energy"] = finite_or_null(energy.total);
+    entry["energy"] = io::finite_or_null(energy.total);
     std::vector<plots::FrameSeries>& series = viewer_.energy;
     series[0].values.push_back(energy.total);
     if (options_.energy != global::Energy::blend && !options_.symmetric) return;

@@ -1,5 +1,6 @@
 #include "experiments/apps/cli/frames3_output.hpp"
 
+#include "experiments/inputs/frame_metrics_json.hpp"
 #include "experiments/inputs/mesh3_file.hpp"
 #include "plots/viewer/viewer3.hpp"
 
@@ -14,8 +15,6 @@ namespace affinterp::cli {
 namespace fs = std::filesystem;
 
 namespace {
-
-nlohmann::json finite_or_null3(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
 
 std::string frame3_name(int k, const global3::Mesh3& mesh) {
   std::ostringstream name;
@@ -45,23 +44,13 @@ nlohmann::json Frames3Output::record(int k, const Eigen::Matrix3Xd& vertices,
   }
   if (quality) {
     const global3::FrameMetrics3 metrics = global3::frame_metrics3(reference_, vertices, local_maps, near_folds_);
-    entry.update(metrics3_json(metrics));
-    if (!near_folds_.empty()) entry["inverted_near_folds"] = metrics.inverted_near_folds;
+    entry.update(io::metrics3_json(metrics, !near_folds_.empty()));
   }
   return entry;
 }
 
 void Frames3Output::close() {
   if (npy_) npy_->close();
-}
-
-nlohmann::json metrics3_json(const global3::FrameMetrics3& m) {
-  return {{"inverted_elements", m.inverted_elements},
-          {"min_ratio", finite_or_null3(m.min_ratio)},
-          {"max_ratio", finite_or_null3(m.max_ratio)},
-          {"max_distortion", finite_or_null3(m.max_distortion)},
-          {"mean_distortion", finite_or_null3(m.mean_distortion)},
-          {"measure_ratio", finite_or_null3(m.measure_ratio)}};
 }
 
 std::string inverted_summary(const nlohmann::json& frames, const std::string& whose) {

@@ -41,9 +41,6 @@ class Frames3Output {
   std::vector<unsigned char> near_folds_;
 };
 
-/// metrics.json's numbers of one frame, null for a non-finite one.
-nlohmann::json metrics3_json(const global3::FrameMetrics3& metrics);
-
 /// The closing line's account of metrics.json's "frames": "most inverted elements in a frame: N" (0 without quality
 /// metrics), and where frames count "inverted_near_folds", "; away from <whose> folds: M", the most of them in a
 /// frame that are not.
