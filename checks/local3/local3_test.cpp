@@ -45,6 +45,25 @@ TEST(RotationExp, IsTheRotationAboutTheAxisByTheAngle) {
 }
 
 // log(exp ω) = ω for |ω| < π, to 4·10⁻¹⁶ relative at tiny angles and 10⁻¹⁴ absolute near π.
+// The product through quaternions, its half-angles by the Taylor series (h ≤ 1/4) or the sine and cosine, against
+// the two Rodrigues rotations multiplied in long double: within a few units in the last place, on both sides of
+// the series' threshold |η| = 1/2 and at 0.
+TEST(RotationExpProduct, IsTheProductOfTheTwoRotations) {
+  std::mt19937 rng(7);
+  std::normal_distribution<double> normal;
+  using VL = Vec3<long double>;
+  for (const double a : {0.0, 1e-9, 0.1, 0.4999999, 0.5, 0.5000001, 1.0, 3.0, 7.0, 3 * pi})
+    for (const double b : {0.0, 1e-9, 0.3, 0.4999999, 0.5, 0.5000001, 2.0, pi})
+      for (int k = 0; k < 4; ++k) {
+        const V u = V(normal(rng), normal(rng), normal(rng)).normalized(), w = V(normal(rng), normal(rng), normal(rng));
+        const V omega = a * u, eta = b * w.normalized();
+        const Mat3<long double> exact = rotation_exp<long double>(VL(omega.cast<long double>())) *
+                                        rotation_exp<long double>(VL(eta.cast<long double>()));
+        EXPECT_LT((rotation_exp_product<double>(omega, eta).cast<long double>() - exact).norm(), 4e-15L)
+            << "|omega| = " << a << ", |eta| = " << b;
+      }
+}
+
 TEST(RotationLog, RoundTripsOnThePrincipalBranch) {
   std::mt19937 rng(2);
   for (double theta : {1e-300, 1e-12, 1e-8, 1e-4, 0.5, 1.0, pi / 2, 2.0, 3.0, pi - 1e-6, pi - 1e-9, pi - 1e-13}) {

@@ -8,6 +8,7 @@
 #include <boost/math/constants/constants.hpp>
 
 #include <cmath>
+#include <type_traits>
 
 namespace affinterp::local3 {
 
@@ -50,13 +51,32 @@ Mat3<Scalar> rotation_exp(const Vec3<Scalar>& omega) {
 
 /// exp [ω]× exp [η]×, the rotation by η then by ω, through unit quaternions: q(ω) = (cos(θ/2), (sin(θ/2)/θ) ω) with
 /// θ = |ω| (its limit (1, ω/2) at θ = 0), the product q = q(ω) q(η) written out, and R = (w² − |v|²) I + 2 v vᵀ +
-/// 2w [v]× for q = (w, v). One sine and one cosine a factor, as rotation_exp, and no 3 × 3 product: the rotation
-/// paths' carrier and remainder (theory/global3/rotation_carrier3.hpp) in every frame.
+/// 2w [v]× for q = (w, v); no 3 × 3 product: the rotation paths' carrier and remainder
+/// (theory/global3/rotation_carrier3.hpp) in every frame. In double, a half-angle h = θ/2 ≤ 1/4 (a remainder's, as a
+/// rule) takes cos h and sin(h)/h from their Taylor series in h² to h¹⁴, whose first omitted term is below 10⁻²²:
+/// no square root and no call to the sine and cosine.
 template <class Scalar>
 Mat3<Scalar> rotation_exp_product(const Vec3<Scalar>& omega, const Vec3<Scalar>& eta) {
   using std::cos;
   using std::sin;
   const auto half_turn = [](const Vec3<Scalar>& x, Scalar& w, Vec3<Scalar>& v) {
+    if constexpr (std::is_same_v<Scalar, double>) {
+      if (const double h2 = x.squaredNorm() / 4; h2 <= 1.0 / 16) {
+        w = 1 +
+            h2 * (-1. / 2 +
+                  h2 * (1. / 24 + h2 * (-1. / 720 +
+                                        h2 * (1. / 40320 + h2 * (-1. / 3628800 +
+                                                                 h2 * (1. / 479001600 + h2 * (-1. / 87178291200.)))))));
+        const double sinc =
+            1 + h2 * (-1. / 6 +
+                      h2 * (1. / 120 +
+                            h2 * (-1. / 5040 +
+                                  h2 * (1. / 362880 + h2 * (-1. / 39916800 +
+                                                            h2 * (1. / 6227020800 + h2 * (-1. / 1307674368000.)))))));
+        v = (sinc / 2) * x;
+        return;
+      }
+    }
     const Scalar theta = x.norm();
     Scalar scale(0.5);
     w = Scalar(1);
