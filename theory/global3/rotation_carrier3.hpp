@@ -20,15 +20,16 @@
 // Smoothing: `carrier_steps` steps of ω̄_i ← ½ ω̄_i + ½ (the mean of ω̄ over the elements sharing a facet with i),
 // from the consistent walk's seeds (rotation_branches3.hpp: ω_i, but its parent's reference where ω_i is more than
 // π from it, as at the bar's full turn, whose elements would otherwise pull their neighbours' carriers towards their
-// own logarithms across the bar): a diffusion over a few rings of neighbours,
-// each element's value from the previous step only, so the same bits on any number of threads.
+// own logarithms across the bar): a diffusion over a few rings of neighbours, each element's value from the previous
+// step only, so the same bits on any number of threads.
 #include "theory/global3/rotation_branches3.hpp"
 
 #include <Eigen/Core>
 
 namespace affinterp::global3 {
 
-/// Smoothing steps of the carrier.
+/// Smoothing steps of the carrier, chosen on the 3π bar before any other mesh was measured. Measured there with ω
+/// itself as the seeds: 3 steps left the full turn 0.95 width off; 10, 16 and 30 steps gave 0.21, 0.19 and 0.18.
 inline constexpr int carrier_steps = 16;
 
 /// Each element's rotation logarithm ω_i split as above.
