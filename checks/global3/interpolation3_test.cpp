@@ -269,20 +269,26 @@ TEST(Interpolation3, TwistedBarBeyondPiMatchesItsExactHalfwayPose) {
 // Twisted by 3π, the elements at twist 2π lie on the exponential's singular sphere (rotation_carrier3.hpp): no
 // logarithm of theirs gives their halfway turn, and their paths exp(t ω_i) would leave the frame about a width off
 // at that section. Turned along the smoothed carrier they follow their neighbours: the consistent branch matches the
-// exact halfway pose at every vertex; the principal one is off by a width beyond π.
+// exact halfway pose at every vertex, on the bar in 30 boxes and in 60; the principal one is off by a width beyond π.
+// (Cut into 120 or 240 boxes, the bar's full turn holds more elements than the carrier's 16 steps smooth over, and
+// the frame there depends on the last bits of the element maps, which the native and portable builds round
+// differently: measured 0.77 and 0.28 widths at 120 boxes, 1.47 and 0.91 at 240.)
 TEST(Interpolation3, TwistedBarThreePiMatchesItsExactHalfwayPose) {
   constexpr double length = 10, width = 0.1;
-  const Mesh3 bar = meshes3::tetrahedral_bar(30, length, width);
-  const Mesh3 target = meshes3::twisted(bar, 3 * pi, length), halfway = meshes3::twisted(bar, 1.5 * pi, length);
-  const Interpolation3 consistent(bar, target);
-  const Interpolation3 principal(bar, target, options([](auto& o) { o.rotation_branch = RotationBranch::principal; }));
-  const double error = twist_error(consistent.vertices_at(0.5), halfway, width, 0, -1);
-  const double principal_error = twist_error(principal.vertices_at(0.5), halfway, width, 0, -1);
-  std::cout << "3pi bar at t = 1/2, max vertex error / width: consistent " << error << ", principal " << principal_error
-            << "\n";
-  EXPECT_LT(error, 0.35);
-  EXPECT_GT(principal_error, 1.0);
-  EXPECT_NEAR(consistent.rotation_logs().colwise().norm().maxCoeff(), 3 * pi, 0.1);
+  for (const int boxes : {30, 60}) {
+    const Mesh3 bar = meshes3::tetrahedral_bar(boxes, length, width);
+    const Mesh3 target = meshes3::twisted(bar, 3 * pi, length), halfway = meshes3::twisted(bar, 1.5 * pi, length);
+    const Interpolation3 consistent(bar, target);
+    const Interpolation3 principal(bar, target,
+                                   options([](auto& o) { o.rotation_branch = RotationBranch::principal; }));
+    const double error = twist_error(consistent.vertices_at(0.5), halfway, width, 0, -1);
+    const double principal_error = twist_error(principal.vertices_at(0.5), halfway, width, 0, -1);
+    std::cout << "3pi bar in " << boxes << " boxes at t = 1/2, max vertex error / width: consistent " << error
+              << ", principal " << principal_error << "\n";
+    EXPECT_LT(error, 0.35) << boxes << " boxes";
+    EXPECT_GT(principal_error, 1.0) << boxes << " boxes";
+    EXPECT_NEAR(consistent.rotation_logs().colwise().norm().maxCoeff(), 3 * pi, 0.1) << boxes << " boxes";
+  }
 }
 
 // One frame at a time, a batch in parallel, and one frame on two threads: the same bits. The bar has more

@@ -30,6 +30,8 @@ namespace affinterp::global3 {
 
 /// Smoothing steps of the carrier, chosen on the 3π bar before any other mesh was measured. Measured there with ω
 /// itself as the seeds: 3 steps left the full turn 0.95 width off; 10, 16 and 30 steps gave 0.21, 0.19 and 0.18.
+/// The steps count rings, not distance: the same bar cut into 120 or 240 boxes holds more elements at its full turn
+/// than 16 steps reach, and its frames there are not held (checks/global3/interpolation3_test.cpp).
 inline constexpr int carrier_steps = 16;
 
 /// Each element's rotation logarithm ω_i split as above.
