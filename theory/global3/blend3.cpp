@@ -80,15 +80,11 @@ void Blend3::Engine::decompose(const std::vector<Matrix3d>& maps, const DualGrap
                              record.col(i).tail<6>() << L(0, 0), L(0, 1), L(0, 2), L(1, 1), L(1, 2), L(2, 2);
                            }
                          });
-  RotationSplit3 split;
-  if (options.rotation_branch == global::RotationBranch::consistent) {
-    ConsistentLogs consistent = consistent_logs(graph, principal, previous);
-    split = split_rotations(graph, consistent);
-    omega.push_back(std::move(consistent.omega));
-  } else {
-    split = unsplit_rotations(principal);
-    omega.push_back(principal);
-  }
+  const bool consistent = options.rotation_branch == global::RotationBranch::consistent;
+  ConsistentLogs branched =
+      consistent ? consistent_logs(graph, principal, previous) : ConsistentLogs{principal, principal};
+  const RotationSplit3 split = consistent ? split_rotations(graph, branched) : unsplit_rotations(branched.omega);
+  omega.push_back(std::move(branched.omega));
   record.topRows<3>() = split.carrier;
   record.middleRows<3>(3) = split.remainder;
   if (!record.isZero(0)) moving.push_back(logs.size());

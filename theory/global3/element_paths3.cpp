@@ -15,14 +15,10 @@ ElementPaths3::ElementPaths3(const std::vector<Matrix3d>& maps, LocalHomotopy ho
                              const DualGraph3& graph)
     : homotopy_(homotopy), branch_(branch) {
   const Eigen::Matrix3Xd principal = decompose(maps);
-  if (branch != global::RotationBranch::consistent) {
-    use_logs(principal, principal);
-    if (turns()) split_ = unsplit_rotations(omega_);
-    return;
-  }
-  const ConsistentLogs logs = consistent_logs(graph, principal);
+  const bool consistent = branch == global::RotationBranch::consistent;
+  const ConsistentLogs logs = consistent ? consistent_logs(graph, principal) : ConsistentLogs{principal, principal};
   use_logs(logs.omega, principal);
-  if (turns()) split_ = split_rotations(graph, logs);
+  if (turns()) split_ = consistent ? split_rotations(graph, logs) : unsplit_rotations(omega_);
 }
 
 ElementPaths3::ElementPaths3(const std::vector<Matrix3d>& maps, LocalHomotopy homotopy, const ElementPaths3& forward)
@@ -91,9 +87,9 @@ void ElementPaths3::maps_at(double t, std::span<Matrix3d> out, std::size_t threa
           out[s] = local3::LinearHomotopy3<double>{A_[s]}(t);
           break;
         case LocalHomotopy::polar:  // R_i(t)((1 − t)I + tS_i)
-          out[s] = local3::rotation_exp<double>(Eigen::Vector3d(t * split_.carrier.col(i))) *
-                   (local3::rotation_exp<double>(Eigen::Vector3d(t * split_.remainder.col(i))) *
-                    ((1 - t) * Matrix3d::Identity() + t * stretch_[s]));
+          out[s] = local3::rotation_exp_product<double>(Eigen::Vector3d(t * split_.carrier.col(i)),
+                                                        Eigen::Vector3d(t * split_.remainder.col(i))) *
+                   ((1 - t) * Matrix3d::Identity() + t * stretch_[s]);
           break;
         default:
           out[s] = local3::SvdHomotopy3<double>{omega_U_.col(i), sigma_.col(i), omega_V_.col(i)}(t);

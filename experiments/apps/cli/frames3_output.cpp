@@ -5,7 +5,6 @@
 #include "plots/viewer/viewer3.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
