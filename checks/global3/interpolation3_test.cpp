@@ -268,14 +268,14 @@ TEST(Interpolation3, TwistedBarBeyondPiMatchesItsExactHalfwayPose) {
 
 // Twisted by 3π, the elements at twist 2π lie on the exponential's singular sphere (rotation_carrier3.hpp): no
 // logarithm of theirs gives their halfway turn, and their paths exp(t ω_i) would leave the frame about a width off
-// at that section. Turned along the smoothed carrier they follow their neighbours: the consistent branch matches the
-// exact halfway pose at every vertex, on the bar in 30 boxes and in 60; the principal one is off by a width beyond π.
-// (Cut into 120 or 240 boxes, the bar's full turn holds more elements than the carrier's 16 steps smooth over, and
-// the frame there depends on the last bits of the element maps, which the native and portable builds round
-// differently: measured 0.77 and 0.28 widths at 120 boxes, 1.47 and 0.91 at 240.)
+// at that section. Turned along the filled and smoothed carrier they follow their neighbours: the consistent branch
+// matches the exact halfway pose at every vertex, on the bar in 30 to 240 boxes (the finer, the more elements near
+// the full turn: 0.21, 0.13, 0.05 and 0.11 widths on an AVX-512 build, 0.21, 0.13, 0.08 and 0.08 on the x86-64
+// baseline; without the fill and the walk's prediction 120 and 240 boxes were 0.77 and 1.47 widths off); the
+// principal one is off by a width beyond π.
 TEST(Interpolation3, TwistedBarThreePiMatchesItsExactHalfwayPose) {
   constexpr double length = 10, width = 0.1;
-  for (const int boxes : {30, 60}) {
+  for (const int boxes : {30, 60, 120, 240}) {
     const Mesh3 bar = meshes3::tetrahedral_bar(boxes, length, width);
     const Mesh3 target = meshes3::twisted(bar, 3 * pi, length), halfway = meshes3::twisted(bar, 1.5 * pi, length);
     const Interpolation3 consistent(bar, target);

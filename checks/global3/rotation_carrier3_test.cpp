@@ -1,6 +1,7 @@
 // The rotation paths' carrier and remainder (theory/global3/rotation_carrier3.hpp): they compose to each element's
-// rotation, reduce to the plane's consistent branch when the rotations share an axis, and are smooth across the
-// 3π bar's full turn, where the consistent logarithms themselves jump.
+// rotation, reduce to the plane's consistent branch when the rotations share an axis, hold the seeds up to a half
+// turn and fill in those near a full turn from their neighbours' relative turns, and are smooth across a twisted
+// bar's full turns, where the consistent logarithms themselves jump.
 #include "theory/global3/rotation_carrier3.hpp"
 #include "checks/global3/meshes3.hpp"
 #include "theory/global3/interpolation3.hpp"
@@ -29,6 +30,18 @@ double largest_step(const DualGraph3& graph, const Eigen::Matrix3Xd& x) {
   return step;
 }
 
+/// `count` elements in a row, each sharing a facet with the next.
+DualGraph3 row_graph(int count) {
+  DualGraph3 row;
+  row.start.push_back(0);
+  for (int i = 0; i < count; ++i) {
+    if (i > 0) row.neighbour.push_back(i - 1);
+    if (i + 1 < count) row.neighbour.push_back(i + 1);
+    row.start.push_back(static_cast<int>(row.neighbour.size()));
+  }
+  return row;
+}
+
 // exp [ω̄_i]× exp [η_i]× = exp [ω_i]× for every element of a twisted and bent tube, the remainder a principal
 // logarithm.
 TEST(RotationCarrier3, CarrierThenRemainderIsTheRotation) {
@@ -51,14 +64,7 @@ TEST(RotationCarrier3, CarrierThenRemainderIsTheRotation) {
 TEST(RotationCarrier3, SharedAxisGivesThePlanesConsistentBranch) {
   Eigen::Matrix3Xd omega(3, 40);
   for (Eigen::Index i = 0; i < omega.cols(); ++i) omega.col(i) = Vector3d(0, 0, 3 * pi * static_cast<double>(i) / 39);
-  DualGraph3 path;  // elements in a row, each sharing a facet with the next
-  path.start.push_back(0);
-  for (int i = 0; i < 40; ++i) {
-    if (i > 0) path.neighbour.push_back(i - 1);
-    if (i < 39) path.neighbour.push_back(i + 1);
-    path.start.push_back(static_cast<int>(path.neighbour.size()));
-  }
-  const RotationSplit3 split = split_rotations(path, {omega, omega});  // each seed its own logarithm
+  const RotationSplit3 split = split_rotations(row_graph(40), {omega, omega});  // each seed its own logarithm
   for (Eigen::Index i = 0; i < omega.cols(); ++i) {
     EXPECT_LT((split.carrier.col(i) + split.remainder.col(i) - omega.col(i)).norm(), 1e-12) << "element " << i;
     for (double t : {0.25, 0.5, 0.9})
@@ -68,6 +74,50 @@ TEST(RotationCarrier3, SharedAxisGivesThePlanesConsistentBranch) {
                     .norm(),
                 1e-12)
           << "element " << i << ", t = " << t;
+  }
+}
+
+// A seed is held fully up to a half turn, then less as the exponential's gain across its axis falls, least on the
+// singular sphere: continuous at π, decreasing to 2π, rising again to 3π.
+TEST(RotationCarrier3, SeedFidelityFollowsTheExponentialsGain) {
+  EXPECT_EQ(seed_fidelity(0.0), max_seed_fidelity);
+  EXPECT_EQ(seed_fidelity(pi), max_seed_fidelity);
+  EXPECT_GT(seed_fidelity(pi + 1e-4), 100.0);
+  double previous = max_seed_fidelity;
+  for (double angle = pi + 0.1; angle < 2 * pi; angle += 0.1) {
+    EXPECT_LT(seed_fidelity(angle), previous) << "angle " << angle;
+    previous = seed_fidelity(angle);
+  }
+  EXPECT_EQ(seed_fidelity(2 * pi), min_seed_fidelity);
+  EXPECT_NEAR(seed_fidelity(3 * pi), 0.125, 1e-12);  // w = (σ(3π)/σ(π))² = 1/9
+}
+
+// A row of elements turning about z by 0.8 rad more each, the seed of the one nearest the full turn (6.4 rad) given
+// the same length across the row (x): the fill puts it back along z, between its neighbours, through the free end's
+// relative turns too, and holds the seeds up to a half turn as they are.
+TEST(RotationCarrier3, FillReplacesASeedOnTheSingularSphereByItsNeighbours) {
+  constexpr int count = 11;
+  Eigen::Matrix3Xd omega(3, count);
+  for (int i = 0; i < count; ++i) omega.col(i) = Vector3d(0, 0, 0.8 * i);
+  Eigen::Matrix3Xd seed = omega;
+  seed.col(8) = Vector3d(6.4, 0, 0);
+  const Eigen::Matrix3Xd filled = filled_seeds(row_graph(count), {omega, seed});
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(filled.col(i), seed.col(i)) << "element " << i;
+  for (int i = 4; i < count; ++i) EXPECT_LT((filled.col(i) - omega.col(i)).norm(), 0.05) << "element " << i;
+}
+
+// The walk carries the turn count through each full turn of a bar twisted by 5π, where elements near 2π and 4π
+// have no logarithm within 1 rad of their neighbours' (those exactly at a full turn, none along the bar at all): the
+// carrier follows the twist along the whole bar (without the walk's prediction from the relative turns, the walk lost
+// two turns a little past 2π and the frames were 1.7 widths off).
+TEST(RotationCarrier3, CarrierFollowsTheTwistThroughTwoFullTurns) {
+  const Mesh3 bar = meshes3::tetrahedral_bar(30, 10, 0.1);
+  const Interpolation3 engine(bar, meshes3::twisted(bar, 5 * pi, 10));
+  const Eigen::Matrix3Xd& carrier = engine.rotation_split().carrier;
+  for (Eigen::Index i = 0; i < carrier.cols(); ++i) {
+    const double twist = 5 * pi * (static_cast<double>(i / 6) + 0.5) / 30;  // six tetrahedra a box
+    EXPECT_NEAR(carrier(0, i), twist, 0.5) << "element " << i;
+    EXPECT_LT(carrier.col(i).tail<2>().norm(), 0.1) << "element " << i;
   }
 }
 

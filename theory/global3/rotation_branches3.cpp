@@ -1,5 +1,6 @@
 #include "theory/global3/rotation_branches3.hpp"
 
+#include "theory/local3/rotation3.hpp"
 #include "theory/local3/rotation_branch3.hpp"
 
 #include <algorithm>
@@ -110,10 +111,21 @@ struct Walk {
   /// Visits the element `child` from `parent`: its representative nearest the parent's reference.
   void visit(int child, int parent) {
     visited[static_cast<std::size_t>(child)] = true;
-    omega.col(child) = local3::nearest_log<double>(principal.col(child), reference.col(parent));
-    const double step = (omega.col(child) - reference.col(parent)).norm();
-    reference.col(child) = step <= reliable_step ? omega.col(child) : reference.col(parent);
-    seed.col(child) = step <= pi ? omega.col(child) : reference.col(parent);
+    Eigen::Vector3d predicted = reference.col(parent);
+    omega.col(child) = local3::nearest_log<double>(principal.col(child), predicted);
+    double step = (omega.col(child) - predicted).norm();
+    if (step > reliable_step) {  // the parent's reference advanced by the child's turn relative to the parent
+      const Eigen::Vector3d turn = local3::rotation_log<double>(
+          Eigen::Matrix3d(local3::rotation_exp<double>(Eigen::Vector3d(principal.col(child))) *
+                          local3::rotation_exp<double>(Eigen::Vector3d(principal.col(parent))).transpose()));
+      if (turn.norm() <= reliable_step) {
+        predicted += turn;
+        omega.col(child) = local3::nearest_log<double>(principal.col(child), predicted);
+        step = (omega.col(child) - predicted).norm();
+      }
+    }
+    reference.col(child) = step <= reliable_step ? omega.col(child) : predicted;
+    seed.col(child) = step <= pi ? omega.col(child) : predicted;
     push_neighbours(child);
   }
 };

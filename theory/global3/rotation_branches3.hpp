@@ -14,15 +14,18 @@
 // angles are scalars and a choice is never ambiguous; on the cat poses the breadth-first walk gave up to 474
 // triangles folded against their local maps in mid-frames, this order 18.)
 //
-// Reference: the element's own logarithm when it lies within `reliable_step` (1 rad) of its parent's reference,
-// else the parent's reference. Unlike the plane's, the 3D exponential is singular on the spheres |ω| = 2πk: near
-// them a small tilt of the rotation needs a large change of ω, and an element turned by a full turn about a slightly
-// tilted axis (R ≈ I, as in a twisted bar's elements at twist 2π, sheared by the twist) has all its representatives
-// on the line of its tilt axis, none near its neighbours' ≈ 2π along the bar. Such an element gets its nearest
-// representative (no choice makes its own path right: rotation_carrier3.hpp turns it with its neighbours), but its
-// children are compared with its parent's reference, so that the walk carries the turn count past it. Neighbours on a
-// mesh fine enough for its motion differ by far less than 1 rad; an element on the singular sphere by about 2π·sin(the
-// angle between the axes).
+// Reference: the element's own logarithm when it lies within `reliable_step` (1 rad) of its parent's reference.
+// Unlike the plane's, the 3D exponential is singular on the spheres |ω| = 2πk: near them a small tilt of the
+// rotation needs a large change of ω, and an element turned by a full turn about a slightly tilted axis (R ≈ I, as
+// in a twisted bar's elements at twist 2π, sheared by the twist) has all its representatives on the line of its tilt
+// axis, none near its neighbours' ≈ 2π along the bar. Its turn relative to its parent, d = log(R_child R_parentᵀ),
+// is still small and well determined. So, when no representative lies within 1 rad of the parent's reference r, the
+// element is compared instead with the prediction r + d (when |d| ≤ 1 rad; a larger d is a crease or a fold, and
+// the prediction stays r): it gets the representative nearest that, and if that one too is more than 1 rad off, its
+// children get the prediction as their reference, so that the walk carries the turn count past it, however wide
+// the band of such elements (no choice makes such an element's own path right: rotation_carrier3.hpp turns it with
+// its neighbours). Neighbours on a mesh fine enough for its motion differ by far less than 1 rad; an element on the
+// singular sphere by about 2π·sin(the angle between the axes).
 #include <Eigen/Core>
 
 #include <vector>
@@ -46,8 +49,9 @@ DualGraph3 dual_graph3(const Eigen::MatrixXi& elements);
 /// (rotation_carrier3.hpp).
 struct ConsistentLogs {
   Eigen::Matrix3Xd omega;  ///< ω_i, column i
-  /// ω_i where it lies within π of its parent's reference, else that reference: without the elements none of whose
-  /// logarithms is near their neighbours' (at a twisted bar's full turn, every logarithm across the bar).
+  /// ω_i where it lies within π of its parent's reference (or the prediction above), else that reference or
+  /// prediction: without the elements none of whose logarithms is near their neighbours' (at a twisted bar's full
+  /// turn, every logarithm across the bar).
   Eigen::Matrix3Xd seed;
 };
 

@@ -1,20 +1,88 @@
 #include "theory/global3/rotation_carrier3.hpp"
 
 #include "theory/global/parallel_ranges.hpp"
+#include "theory/global/sparse_factor.hpp"
 #include "theory/global3/frame_threads3.hpp"
 #include "theory/local3/rotation3.hpp"
 
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <utility>
+#include <vector>
 
 namespace affinterp::global3 {
 
 using Eigen::Index;
 using Eigen::Vector3d;
 
+double seed_fidelity(double angle) {
+  if (angle <= std::numbers::pi) return max_seed_fidelity;
+  const double gain = std::abs(std::sin(angle / 2)) / (angle / 2) / (2 / std::numbers::pi), w = gain * gain;
+  return w >= 1 ? max_seed_fidelity : std::clamp(w / (1 - w), min_seed_fidelity, max_seed_fidelity);
+}
+
+Eigen::Matrix3Xd filled_seeds(const DualGraph3& graph, const ConsistentLogs& logs) {
+  const Eigen::Matrix3Xd& seed = logs.seed;
+  // The unknowns: the elements whose seed is held less than max_seed_fidelity, numbered in increasing order.
+  std::vector<Index> unknown(static_cast<std::size_t>(seed.cols()), -1), members;
+  std::vector<double> fidelity;
+  for (Index i = 0; i < seed.cols(); ++i)
+    if (const double rho = seed_fidelity(seed.col(i).norm()); rho < max_seed_fidelity) {
+      unknown[static_cast<std::size_t>(i)] = static_cast<Index>(members.size());
+      members.push_back(i);
+      fidelity.push_back(rho);
+    }
+  Eigen::Matrix3Xd filled = seed;
+  if (members.empty()) return filled;
+  // Row u (element i), over its neighbours j with |d_ij| ≤ reliable_step, d_ij = log(R_j R_iᵀ) (n_i of them):
+  //     (ρ_i + n_i) f_i − Σ_{unknown j} f_j = ρ_i s_i + Σ_{held j} s_j − Σ_j d_ij.
+  const auto n = static_cast<Index>(members.size());
+  std::vector<Eigen::Triplet<double>> entries;
+  global::SparseFactor<double>::Block rhs(n, 3);
+  const auto rotation = [&](Index i) { return local3::rotation_exp<double>(Vector3d(logs.omega.col(i))); };
+  // d_ij from the pair in increasing order, negated for the other: the same edges kept from both ends, K symmetric.
+  const auto relative_turn = [&](Index i, Index j) -> Vector3d {
+    const Index a = std::min(i, j), b = std::max(i, j);
+    const Vector3d d = local3::rotation_log<double>(Eigen::Matrix3d(rotation(b) * rotation(a).transpose()));
+    return a == i ? d : Vector3d(-d);
+  };
+  for (Index u = 0; u < n; ++u) {
+    const Index i = members[static_cast<std::size_t>(u)];
+    const double rho = fidelity[static_cast<std::size_t>(u)];
+    rhs.row(u) = rho * seed.col(i).transpose();
+    double diagonal = rho;
+    for (int s = graph.start[static_cast<std::size_t>(i)]; s < graph.start[static_cast<std::size_t>(i) + 1]; ++s) {
+      const int j = graph.neighbour[static_cast<std::size_t>(s)];
+      const Vector3d d_ij = relative_turn(i, j);
+      if (d_ij.norm() > reliable_step) continue;  // a crease or a fold: no small turn to integrate
+      diagonal += 1;
+      rhs.row(u) -= d_ij.transpose();
+      if (const Index v = unknown[static_cast<std::size_t>(j)]; v >= 0)
+        entries.emplace_back(u, v, -1.0);
+      else
+        rhs.row(u) += seed.col(j).transpose();
+    }
+    entries.emplace_back(u, u, diagonal);
+  }
+  Eigen::SparseMatrix<double> K(n, n);
+  K.setFromTriplets(entries.begin(), entries.end());
+  const auto factor = global::make_sparse_factor<double>(n);
+  factor->analyse(K);
+  // K is strictly diagonally dominant (every ρ_i ≥ min_seed_fidelity), so positive definite, its pivots at least
+  // min_seed_fidelity and at most max_seed_fidelity plus a degree.
+  factor->factorise(K, 1);
+  factor->solve_in_place(rhs, 1);
+  for (Index u = 0; u < n; ++u) filled.col(members[static_cast<std::size_t>(u)]) = rhs.row(u).transpose();
+  return filled;
+}
+
 RotationSplit3 split_rotations(const DualGraph3& graph, const ConsistentLogs& logs) {
   const auto m = static_cast<std::size_t>(logs.omega.cols());
   const std::size_t threads = global::ranges_for(m, decompositions_per_thread);
-  Eigen::Matrix3Xd carrier = logs.seed, next(3, logs.omega.cols());
+  Eigen::Matrix3Xd carrier = filled_seeds(graph, logs), next(3, logs.omega.cols());
   for (int step = 0; step < carrier_steps; ++step) {
     global::for_each_range(m, threads, [&](std::size_t first, std::size_t last) {
       for (std::size_t i = first; i < last; ++i) {

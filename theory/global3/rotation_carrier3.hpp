@@ -17,22 +17,49 @@
 // The smoothed carrier turns those elements with their neighbours, about the bar, and leaves them only their small
 // remainder (sequel.3d.twisted-bar measures both paths).
 //
-// Smoothing: `carrier_steps` steps of ω̄_i ← ½ ω̄_i + ½ (the mean of ω̄ over the elements sharing a facet with i),
-// from the consistent walk's seeds (rotation_branches3.hpp: ω_i, but its parent's reference where ω_i is more than
-// π from it, as at the bar's full turn, whose elements would otherwise pull their neighbours' carriers towards their
-// own logarithms across the bar): a diffusion over a few rings of neighbours, each element's value from the previous
-// step only, so the same bits on any number of threads.
+// The carrier, in two steps:
+//  1. Fill. The walk's seeds s_i (rotation_branches3.hpp) are as good as the exponential makes them. Across its axis
+//     exp moves by the gain σ(θ) = |sin(θ/2)|/(θ/2) (θ = |ω|), which falls from 2/π at a half turn to 0 on the
+//     singular sphere θ = 2π: there a seed's direction is the shear's tilt, not the element's turn. Each seed is
+//     held with the fidelity ρ_i = w/(1 − w), w = (σ(θ_i)/σ(π))² (infinite up to a half turn, 0 on the sphere),
+//     and the carrier's starting field f minimises
+//         Σ_i ρ_i |f_i − s_i|² + Σ_{i ~ j} |f_j − f_i − d_ij|²,     d_ij = log(R_j R_iᵀ),
+//     over the neighbours i ~ j (elements sharing a facet) whose relative turn d_ij is small (|d_ij| ≤ 1 rad; it is
+//     well determined at any θ, and where the rotations share an axis it is exactly ω_j − ω_i): one sparse solve
+//     over the elements beyond a half turn, the others held at their seeds. The seeds near a full turn are
+//     replaced by their reliable neighbours' seeds carried along the relative turns, however many rings the band
+//     is wide. No element beyond a half turn, nothing to solve: f = s.
+//  2. Smooth. `carrier_steps` steps of ω̄_i ← ½ ω̄_i + ½ (the mean of ω̄ over the elements sharing a facet with i),
+//     from f: a diffusion over a few rings of neighbours, each element's value from the previous step only, so the
+//     same bits on any number of threads.
+// The fill, with the walk's prediction, is what holds finely cut bars and turns beyond 2π: with the smoothing alone,
+// the 3π bar in 120 or 240 boxes has more elements at its full turn than 16 steps reach, and its frames there were
+// off by 0.77 and 1.47 widths on an AVX-512 build and 0.28 and 0.91 on the x86-64 baseline (the branch near-ties at
+// the full turn fell differently in the last bits); with both, the two builds hold it within a quarter of the width
+// (checks/global3/interpolation3_test.cpp).
 #include "theory/global3/rotation_branches3.hpp"
 
 #include <Eigen/Core>
 
 namespace affinterp::global3 {
 
-/// Smoothing steps of the carrier, chosen on the 3π bar before any other mesh was measured. Measured there with ω
-/// itself as the seeds: 3 steps left the full turn 0.95 width off; 10, 16 and 30 steps gave 0.21, 0.19 and 0.18.
-/// The steps count rings, not distance: the same bar cut into 120 or 240 boxes holds more elements at its full turn
-/// than 16 steps reach, and its frames there are not held (checks/global3/interpolation3_test.cpp).
+/// Smoothing steps of the carrier, chosen on the 3π bar before any other mesh was measured (and before the fill).
+/// Measured there with ω itself as the seeds: 3 steps left the full turn 0.95 width off; 10, 16 and 30 steps gave
+/// 0.21, 0.19 and 0.18.
 inline constexpr int carrier_steps = 16;
+
+/// The fill's bounds on ρ_i: below max_seed_fidelity the seed is an unknown (above it the fill would move it by
+/// less than a thousandth of its neighbours' pull, and it is held), and ρ_i is at least min_seed_fidelity, on the
+/// singular sphere too (so that the fill's system is strictly diagonally dominant, even on a piece all of whose
+/// elements turn by more than a half turn).
+inline constexpr double max_seed_fidelity = 1e3, min_seed_fidelity = 1e-6;
+
+/// The fidelity ρ of a seed turning by `angle` = |s_i| (step 1 above).
+double seed_fidelity(double angle);
+
+/// The fill of step 1: the seeds of `logs` with their elements beyond a half turn replaced by the minimiser above
+/// (the relative turns from the rotations exp [ω_i]×).
+Eigen::Matrix3Xd filled_seeds(const DualGraph3& graph, const ConsistentLogs& logs);
 
 /// Each element's rotation logarithm ω_i split as above.
 struct RotationSplit3 {
