@@ -43,10 +43,14 @@ bench::RecordedRun run(const std::string& id, const std::string& cpu, double rat
   return r;
 }
 
-TEST(PooledMachines, TheMachineKeyIsModelVectorExtensionAndCompiler) {
-  EXPECT_EQ(bench::machine_key({{"cpu", "AMD EPYC"}, {"cpu_flags", "avx avx2 avx512f"}, {"compiler", "g++ 12.2.0"}}),
-            "AMD EPYC, avx512f, g++ 12.2.0");
-  EXPECT_EQ(bench::machine_key({{"cpu", "AMD EPYC"}}), "AMD EPYC, CPU flags not recorded, compiler not recorded");
+TEST(PooledMachines, TheMachineKeyIsModelVectorExtensionCompilerAndBuildFlags) {
+  EXPECT_EQ(bench::machine_key({{"cpu", "AMD EPYC"},
+                                {"cpu_flags", "avx avx2 avx512f"},
+                                {"compiler", "g++ 12.2.0"},
+                                {"flags", " -O3 -DNDEBUG -Wall -Wextra -march=native -ffp-contract=off"}}),
+            "AMD EPYC, avx512f, g++ 12.2.0 -O3 -DNDEBUG -march=native -ffp-contract=off");
+  EXPECT_EQ(bench::machine_key({{"cpu", "AMD EPYC"}}),
+            "AMD EPYC, CPU flags not recorded, compiler not recorded, build flags not recorded");
   const std::vector<bench::RecordedRun> runs = {run("1", "A", 3, 0.01), run("2", "B", 3, 0.01), run("3", "A", 3, 0.01)};
   const std::vector<bench::MachineRuns> machines = bench::by_machine(runs);
   ASSERT_EQ(machines.size(), 2u);
@@ -55,6 +59,12 @@ TEST(PooledMachines, TheMachineKeyIsModelVectorExtensionAndCompiler) {
   bench::RecordedRun other_compiler = run("4", "A", 3, 0.01);
   other_compiler.machine["compiler"] = "clang++ 16.0.6";
   EXPECT_NE(bench::machine_key(other_compiler.machine), machines[0].key);
+  nlohmann::json built = run("5", "A", 3, 0.01).machine, with_warnings = built, without_contraction = built;
+  built["flags"] = "-O3 -march=native";
+  with_warnings["flags"] = "-O3 -march=native -Wall -Wextra";
+  without_contraction["flags"] = "-O3 -march=native -ffp-contract=off";
+  EXPECT_EQ(bench::machine_key(with_warnings), bench::machine_key(built));
+  EXPECT_NE(bench::machine_key(without_contraction), bench::machine_key(built));
 }
 
 TEST(PooledMachines, AStraddlingRunOfAnAgreeingMachineIsReproducedPooled) {

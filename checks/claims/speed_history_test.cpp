@@ -88,7 +88,8 @@ TEST(SpeedHistory, RunsThatAgreeDecideTheClaim) {
   EXPECT_EQ(outcome.verdict, V::reproduced) << outcome.summary;
   EXPECT_EQ(outcome.evidence.measurements["runs"].size(), 2u);
   EXPECT_EQ(outcome.evidence.measurements["latest_run"], "2026-01-02-b");
-  EXPECT_NE(outcome.summary.find("CPU A, CPU flags not recorded, compiler not recorded, 1 run: reproduced"),
+  EXPECT_NE(outcome.summary.find(
+                "CPU A, CPU flags not recorded, compiler not recorded, build flags not recorded, 1 run: reproduced"),
             std::string::npos)
       << outcome.summary;
   EXPECT_EQ(outcome.evidence.measurements["machines"].size(), 2u);

@@ -33,13 +33,14 @@ Verdict all_of(std::initializer_list<Verdict> verdicts);
 Verdict all_of(std::span<const Verdict> verdicts);
 
 /// The rule across machines, as the report states it (kAcrossMachinesRule): each machine (one machine_key:
-/// CPU model, widest vector extension, compiler) decided on its runs pooled; the verdict every machine gives when
-/// they all give the same; machine-dependent when one machine is reproduced and another not-reproduced;
+/// CPU model, widest vector extension, compiler, build flags) decided on its runs pooled; the verdict every machine
+/// gives when they all give the same; machine-dependent when one machine is reproduced and another not-reproduced;
 /// otherwise (the machines that decide agree, some do not decide) inconclusive, as is an empty history.
 Verdict across_machines(std::span<const Verdict> machines);
 inline constexpr std::string_view kAcrossMachinesRule =
     "the recorded runs (reports/bench/history/, one entry per run of the benchmarks) are grouped by machine (same "
-    "CPU model, widest vector extension among its flags, compiler and version); each machine is decided by the "
+    "CPU model, widest vector extension among its flags, compiler and version, and build flags but warnings: another "
+    "build is another machine); each machine is decided by the "
     "interval rule on its pooled interval: the same statistic over the repetitions of all its runs, its 95% "
     "percentile interval from a hierarchical bootstrap that draws the machine's runs with replacement, then each "
     "drawn run's processes, then each drawn process's repetitions (10,000 resamples, seed 2015; a machine of one "
