@@ -42,7 +42,22 @@ Eigen::Matrix3Xd filled_seeds(const DualGraph3& graph, const ConsistentLogs& log
   const auto n = static_cast<Index>(members.size());
   std::vector<Eigen::Triplet<double>> entries;
   global::SparseFactor<double>::Block rhs(n, 3);
-  const auto rotation = [&](Index i) { return local3::rotation_exp<double>(Vector3d(logs.omega.col(i))); };
+  // R_i = exp [ω_i]× of the unknowns and their neighbours, each computed once.
+  std::vector<Index> slot(static_cast<std::size_t>(seed.cols()), -1);
+  std::vector<Eigen::Matrix3d> rotations;
+  const auto cache = [&](Index i) {
+    if (slot[static_cast<std::size_t>(i)] >= 0) return;
+    slot[static_cast<std::size_t>(i)] = static_cast<Index>(rotations.size());
+    rotations.push_back(local3::rotation_exp<double>(Vector3d(logs.omega.col(i))));
+  };
+  for (const Index i : members) {
+    cache(i);
+    for (int s = graph.start[static_cast<std::size_t>(i)]; s < graph.start[static_cast<std::size_t>(i) + 1]; ++s)
+      cache(graph.neighbour[static_cast<std::size_t>(s)]);
+  }
+  const auto rotation = [&](Index i) -> const Eigen::Matrix3d& {
+    return rotations[static_cast<std::size_t>(slot[static_cast<std::size_t>(i)])];
+  };
   // d_ij from the pair in increasing order, negated for the other: the same edges kept from both ends, K symmetric.
   const auto relative_turn = [&](Index i, Index j) -> Vector3d {
     const Index a = std::min(i, j), b = std::max(i, j);
