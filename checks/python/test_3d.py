@@ -106,6 +106,32 @@ def test_interpolation_matches_the_cli(tmp_path):
                                   affinterp.Interpolation(V, W, T, symmetric=True).frames([0, 0.5, 1]))
 
 
+def rotation(omega):
+    """exp [omega]x by Rodrigues' formula."""
+    angle = np.linalg.norm(omega)
+    if angle == 0:
+        return np.eye(3)
+    k = np.array([[0, -omega[2], omega[1]], [omega[2], 0, -omega[0]], [-omega[1], omega[0], 0]]) / angle
+    return np.eye(3) + np.sin(angle) * k + (1 - np.cos(angle)) * k @ k
+
+
+def test_rotation_logs_go_beyond_pi_and_split_into_carrier_and_remainder():
+    V, T = bar(slices=12, length=12.0)
+    W = twisted(V, 1.5 * np.pi, length=12.0)
+    consistent = affinterp.Interpolation(V, W, T)
+    principal = affinterp.Interpolation(V, W, T, rotation_branch="principal")
+    logs = consistent.rotation_logs()
+    assert logs.shape == (len(T), 3)
+    assert np.linalg.norm(logs, axis=1).max() > 1.4 * np.pi  # the bar's far end turns by 1.5 pi about x
+    assert np.linalg.norm(principal.rotation_logs(), axis=1).max() <= np.pi + 1e-12
+    carrier, remainder = consistent.rotation_split()
+    assert carrier.shape == remainder.shape == (len(T), 3)
+    for omega, c, r in zip(logs, carrier, remainder):
+        np.testing.assert_allclose(rotation(c) @ rotation(r), rotation(omega), atol=1e-12)
+    np.testing.assert_array_equal(principal.rotation_split()[0], principal.rotation_logs())
+    assert not principal.rotation_split()[1].any()
+
+
 def test_metrics_are_the_clis_with_the_targets_folds(tmp_path):
     V, F = tube()
     W = twisted(V, 0.5)

@@ -55,6 +55,22 @@ def read_obj_vertices(path):
         return np.array([[float(w) for w in line.split()[1:3]] for line in f if line.startswith("v ")])
 
 
+def test_rotation_logs_are_the_polar_angles_on_their_branch(c_to_star):
+    m = c_to_star
+    interpolation = affinterp.Interpolation(m["V0"], m["V1"], m["F"])
+    theta = interpolation.rotation_logs()
+    assert theta.shape == (len(m["F"]),)
+    for angle, (a, b, c) in zip(theta, m["F"]):
+        P = np.column_stack([m["V0"][b] - m["V0"][a], m["V0"][c] - m["V0"][a]])
+        Q = np.column_stack([m["V1"][b] - m["V1"][a], m["V1"][c] - m["V1"][a]])
+        A = Q @ np.linalg.inv(P)
+        polar = np.arctan2(A[1, 0] - A[0, 1], A[0, 0] + A[1, 1])
+        assert abs(np.remainder(angle - polar + np.pi, 2 * np.pi) - np.pi) < 1e-9
+    with pytest.raises(ValueError, match="3D meshes only") as error:
+        interpolation.rotation_split()
+    assert "\n" not in str(error.value)
+
+
 @pytest.mark.parametrize("options, keywords", [
     ([], {}),
     (["--homotopy", "polar", "--energy", "F", "--pin", "0"], {"homotopy": "polar", "energy": "F", "pins": [0]}),

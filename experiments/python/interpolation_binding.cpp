@@ -141,6 +141,18 @@ class Interpolation {
     return dict_of(entry);
   }
 
+  /// The rotations' logarithms on their branch: 2D θ_i (m,), 3D ω_i (m, 3).
+  py::array_t<double> rotation_logs() const {
+    if (space_) return space_->rotation_logs();
+    const Eigen::VectorXd& theta = engine_->rotation_angles();
+    return py::array_t<double>(theta.size(), theta.data());
+  }
+
+  py::tuple rotation_split() const {
+    if (!space_) value_error("rotation_split: 3D meshes only (in the plane each triangle turns along exp(t theta_i))");
+    return space_->rotation_split();
+  }
+
  private:
   Eigen::Matrix2Xd frame(double t) const {
     return translated([&] { return engine_->vertices_at(t); });
@@ -242,7 +254,15 @@ void bind_interpolation(py::module_& m) {
            "The frame at t's entry of `affinterp interpolate`'s metrics.json as a dict: t, energy and the quality "
            "numbers (2D: flipped_triangles, min_det, max_det, max_distortion, mean_distortion, area_ratio; 3D: "
            "inverted_elements, min_ratio, max_ratio, max_distortion, mean_distortion, measure_ratio, and "
-           "inverted_near_folds when a surface target folds triangles within the surface); None where not finite.");
+           "inverted_near_folds when a surface target folds triangles within the surface); None where not finite.")
+      .def("rotation_logs", &Interpolation::rotation_logs,
+           "Each element's rotation logarithm on the branch rotation_branch chose: in the plane the polar angle "
+           "theta_i, shape (m,); in space the axis-angle vector omega_i, shape (m, 3).")
+      .def("rotation_split", &Interpolation::rotation_split,
+           "3D only: (carrier, remainder), each (m, 3): on the consistent branch each element turns along "
+           "exp(t carrier_i) exp(t remainder_i), the carrier its neighbours' turns filled across full turns and "
+           "smoothed, the remainder the principal logarithm of what is left (the principal branch: carrier = omega, "
+           "remainder = 0). ValueError for 2D meshes.");
 }
 
 }  // namespace affinterp::python

@@ -192,6 +192,15 @@ py::object SpaceInterpolation::metrics_at(double t) const {
   return dict_of(entry);
 }
 
+py::array_t<double> SpaceInterpolation::rotation_logs() const {
+  return to_points(Eigen::Matrix3Xd(engine_->rotation_logs()));
+}
+
+py::tuple SpaceInterpolation::rotation_split() const {
+  const global3::RotationSplit3& split = engine_->rotation_split();
+  return py::make_tuple(to_points(Eigen::Matrix3Xd(split.carrier)), to_points(Eigen::Matrix3Xd(split.remainder)));
+}
+
 void bind_blend(py::module_& m) {
   py::class_<SpaceBlend>(m, "Blend", R"(N-way blend of K >= 2 compatible 3D poses (Kaji et al.'s Lie-algebra
 parametrisation): each element's map exp(sum_k w_k log R_k) exp(sum_k w_k log S_k) from poses[0] (on the

@@ -32,7 +32,9 @@ class SpaceInterpolation {
   py::array_t<double> vertices_at(double t) const;            ///< (n, 3)
   py::array_t<double> frames(const py::object& times) const;  ///< (k, n, 3)
   double energy_at(double t) const;
-  py::object metrics_at(double t) const;  ///< metrics.json's entry of the frame at t, as a dict
+  py::object metrics_at(double t) const;      ///< metrics.json's entry of the frame at t, as a dict
+  py::array_t<double> rotation_logs() const;  ///< (m, 3): ω_i on its branch (Interpolation3::rotation_logs)
+  py::tuple rotation_split() const;           ///< ((m, 3) carrier, (m, 3) remainder): Interpolation3::rotation_split
 
  private:
   void check_time(double t) const;
