@@ -56,12 +56,12 @@ Inverted most_inverted(const Mesh3& source, const Mesh3& target, const Interpola
 // Inversions: E^F does fold a few triangles of these pairs in mid-frames (exp-log's own maps never invert:
 // local3_test). The poses themselves fold triangles within the surface against cat-0 (target_folds3.hpp: 9 in cat-5
 // to 156 in cat-4), which the local maps turn by a half-turn about an axis in the surface. Measured in these 11
-// frames, with the rotations turned along their carrier (rotation_carrier3.hpp): at most 12 of 14,410 inverted with
-// the consistent branch (cat-4; 18 without the carrier); the principal branch folds 207 on cat-4 and 107 on cat-7,
-// the poses whose tail turns. Away from the target's folds (neither a fold nor sharing a vertex with one): none on
-// cat-1 to cat-6, 1 on cat-7, 4 on cat-8 and 2 on cat-9 (2, 2 and 2 without the carrier). The check asks for at most
-// 0.2% (29 triangles) on every pose, at most 4 away from the folds, and, on the two tail poses, at most a third of
-// the principal branch's count.
+// frames, with the rotations turned along their carrier (rotation_carrier3.hpp): at most 11 of 14,410 inverted with
+// the consistent branch (cat-4 and cat-7; 18 on cat-4 without the carrier); the principal branch folds 207 on cat-4
+// and 107 on cat-7, the poses whose tail turns. Away from the target's folds (neither a fold nor sharing a vertex
+// with one): none but 1 on cat-7 (before the carrier's fill and the walk's prediction 1 on cat-7, 4 on cat-8 and 2
+// on cat-9). The check asks for at most 0.2% (29 triangles) on every pose, at most 3 away from the folds, and, on
+// the two tail poses, at most a third of the principal branch's count.
 TEST(Cat3, ExpLogFramesAreContinuousAndFoldFewTriangles) {
   const std::vector<Mesh3> poses = cat_poses();
   if (poses.size() < 10) GTEST_SKIP() << "the cat poses (../shared/data/meshes3d/cat/cat-*.off) are not present";
@@ -85,7 +85,7 @@ TEST(Cat3, ExpLogFramesAreContinuousAndFoldFewTriangles) {
               << " of the box; most inverted triangles in 11 frames " << inverted << ", away from the "
               << target_folds(poses[0], poses[k]).size() << " target folds " << most.away_from_folds << "\n";
     EXPECT_LE(inverted, 29) << "cat-" << k;
-    EXPECT_LE(most.away_from_folds, 4) << "cat-" << k;
+    EXPECT_LE(most.away_from_folds, 3) << "cat-" << k;
     if (k == 4 || k == 7) {
       const Eigen::Index inverted_principal =
           most_inverted(poses[0], poses[k], Interpolation3(poses[0], poses[k], principal)).all;

@@ -39,7 +39,14 @@
 // the 3π bar in 120 or 240 boxes has more elements at its full turn than 16 steps reach, and its frames there were
 // off by 0.77 and 1.47 widths on an AVX-512 build and 0.28 and 0.91 on the x86-64 baseline (the branch near-ties at
 // the full turn fell differently in the last bits); with both, the two builds hold it within a quarter of the width
-// (checks/global3/interpolation3_test.cpp).
+// (checks/global3/interpolation3_test.cpp). Bars twisted by 2π to 4π, in 30 or 120 boxes, stay within 0.31 widths
+// at t = 1/4, 1/2 and 3/4.
+//
+// Where it stops holding: a bar twisted by 5π. Its seeds beyond a half turn carry the elements' shear tilts
+// amplified by θ/(2 sin(θ/2)) across the axis (3 to 4 rad at θ ≈ 3.6π); held weakly, they still leave the filled
+// carrier about 0.7 rad across the bar where |ω̄| ≈ 4π, an axis 0.06 rad off, and the sections there turn 0.1 rad
+// wrong at t = 1/4 and 3/4 (right at 1/2, where the carrier has turned twice round): 0.40 widths off in 30 boxes,
+// 1.2 in 120. A carrier held only along its seeds' axes, or a fill of the turn angle alone, would be the next step.
 #include "theory/global3/rotation_branches3.hpp"
 
 #include <Eigen/Core>
