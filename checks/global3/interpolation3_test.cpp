@@ -270,9 +270,9 @@ TEST(Interpolation3, TwistedBarBeyondPiMatchesItsExactHalfwayPose) {
 // logarithm of theirs gives their halfway turn, and their paths exp(t ω_i) would leave the frame about a width off
 // at that section. Turned along the filled and smoothed carrier they follow their neighbours: the consistent branch
 // matches the exact halfway pose at every vertex, on the bar in 30 to 240 boxes (the finer, the more elements near
-// the full turn: 0.21, 0.13, 0.05 and 0.11 widths on an AVX-512 build, 0.21, 0.13, 0.08 and 0.08 on the x86-64
-// baseline; without the fill and the walk's prediction 120 and 240 boxes were 0.77 and 1.47 widths off); the
-// principal one is off by a width beyond π.
+// the full turn: 0.17, 0.10, 0.06 and 0.04 widths on an AVX-512 build and on the x86-64 baseline alike; without the
+// fill and the walk's prediction 120 and 240 boxes were 0.77 and 1.47 widths off, and 0.28 and 0.91 on the
+// baseline); the principal one is off by a width beyond π.
 TEST(Interpolation3, TwistedBarThreePiMatchesItsExactHalfwayPose) {
   constexpr double length = 10, width = 0.1;
   for (const int boxes : {30, 60, 120, 240}) {
@@ -288,6 +288,22 @@ TEST(Interpolation3, TwistedBarThreePiMatchesItsExactHalfwayPose) {
     EXPECT_LT(error, 0.35) << boxes << " boxes";
     EXPECT_GT(principal_error, 1.0) << boxes << " boxes";
     EXPECT_NEAR(consistent.rotation_logs().colwise().norm().maxCoeff(), 3 * pi, 0.1) << boxes << " boxes";
+  }
+}
+
+// Twisted by 5π, through two full turns: the frames at t = 1/4, 1/2 and 3/4 match the bar twisted by 5πt at every
+// vertex, in 30 boxes and in 120 (0.32 and 0.09 widths). With seeds held by the square of the exponential's gain
+// instead of its fourth power, the carrier tilted 0.06 rad where it neared 4π, and the sections there turned 0.1
+// rad wrong at t = 1/4 and 3/4 (1.2 widths off in 120 boxes).
+TEST(Interpolation3, TwistedBarFivePiMatchesItsExactPoses) {
+  constexpr double length = 10, width = 0.1;
+  for (const int boxes : {30, 120}) {
+    const Mesh3 bar = meshes3::tetrahedral_bar(boxes, length, width);
+    const Interpolation3 engine(bar, meshes3::twisted(bar, 5 * pi, length));
+    for (const double t : {0.25, 0.5, 0.75}) {
+      const double error = twist_error(engine.vertices_at(t), meshes3::twisted(bar, 5 * pi * t, length), width, 0, -1);
+      EXPECT_LT(error, 0.35) << boxes << " boxes, t = " << t;
+    }
   }
 }
 

@@ -89,7 +89,7 @@ TEST(RotationCarrier3, SeedFidelityFollowsTheExponentialsGain) {
     previous = seed_fidelity(angle);
   }
   EXPECT_EQ(seed_fidelity(2 * pi), min_seed_fidelity);
-  EXPECT_NEAR(seed_fidelity(3 * pi), 0.125, 1e-12);  // w = (σ(3π)/σ(π))² = 1/9
+  EXPECT_NEAR(seed_fidelity(3 * pi), 1.0 / 80, 1e-12);  // w = (σ(3π)/σ(π))⁴ = 1/81
 }
 
 // A row of elements turning about z by 0.8 rad more each, the seed of the one nearest the full turn (6.4 rad) given

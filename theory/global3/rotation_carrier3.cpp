@@ -20,7 +20,7 @@ using Eigen::Vector3d;
 
 double seed_fidelity(double angle) {
   if (angle <= std::numbers::pi) return max_seed_fidelity;
-  const double gain = std::abs(std::sin(angle / 2)) / (angle / 2) / (2 / std::numbers::pi), w = gain * gain;
+  const double gain = std::abs(std::sin(angle / 2)) / (angle / 2) / (2 / std::numbers::pi), w = std::pow(gain, 4);
   return w >= 1 ? max_seed_fidelity : std::clamp(w / (1 - w), min_seed_fidelity, max_seed_fidelity);
 }
 

@@ -20,9 +20,14 @@
 // The carrier, in two steps:
 //  1. Fill. The walk's seeds s_i (rotation_branches3.hpp) are as good as the exponential makes them. Across its axis
 //     exp moves by the gain σ(θ) = |sin(θ/2)|/(θ/2) (θ = |ω|), which falls from 2/π at a half turn to 0 on the
-//     singular sphere θ = 2π: there a seed's direction is the shear's tilt, not the element's turn. Each seed is
-//     held with the fidelity ρ_i = w/(1 − w), w = (σ(θ_i)/σ(π))² (infinite up to a half turn, 0 on the sphere),
-//     and the carrier's starting field f minimises
+//     singular sphere θ = 2π: there a seed's direction is the shear's tilt, not the element's turn, and beyond
+//     it the tilt comes amplified by 1/σ across the axis (3 to 4 rad at θ ≈ 3.6π on a bar twisted by 5π). Each
+//     seed is held with the fidelity ρ_i = w/(1 − w), w = (σ(θ_i)/σ(π))⁴ (infinite up to a half turn, 0 on the
+//     sphere), so that its pull ρ_i |f_i − s_i| on the carrier vanishes as σ³. (With the square, the inverse of
+//     the error's variance, the pulls left the 5π bar's carrier 0.06 rad off its axis where it neared 4π, and its
+//     sections there 0.1 rad wrong at t = 1/4 and 3/4: 1.2 widths off in 120 boxes. The power was chosen on the
+//     twisted bars, 2, 4 and 8 tried; the cat poses measured after it moved by one triangle at most.) The carrier's
+//     starting field f minimises
 //         Σ_i ρ_i |f_i − s_i|² + Σ_{i ~ j} |f_j − f_i − d_ij|²,     d_ij = log(R_j R_iᵀ),
 //     over the neighbours i ~ j (elements sharing a facet) whose relative turn d_ij is small (|d_ij| ≤ 1 rad; it is
 //     well determined at any θ, and where the rotations share an axis it is exactly ω_j − ω_i): one sparse solve
@@ -39,14 +44,8 @@
 // the 3π bar in 120 or 240 boxes has more elements at its full turn than 16 steps reach, and its frames there were
 // off by 0.77 and 1.47 widths on an AVX-512 build and 0.28 and 0.91 on the x86-64 baseline (the branch near-ties at
 // the full turn fell differently in the last bits); with both, the two builds hold it within a quarter of the width
-// (checks/global3/interpolation3_test.cpp). Bars twisted by 2π to 4π, in 30 or 120 boxes, stay within 0.31 widths
-// at t = 1/4, 1/2 and 3/4.
-//
-// Where it stops holding: a bar twisted by 5π. Its seeds beyond a half turn carry the elements' shear tilts
-// amplified by θ/(2 sin(θ/2)) across the axis (3 to 4 rad at θ ≈ 3.6π); held weakly, they still leave the filled
-// carrier about 0.7 rad across the bar where |ω̄| ≈ 4π, an axis 0.06 rad off, and the sections there turn 0.1 rad
-// wrong at t = 1/4 and 3/4 (right at 1/2, where the carrier has turned twice round): 0.40 widths off in 30 boxes,
-// 1.2 in 120. A carrier held only along its seeds' axes, or a fill of the turn angle alone, would be the next step.
+// (checks/global3/interpolation3_test.cpp). Bars twisted by 1.5π to 5π, in 30 or 120 boxes, stay within 0.32
+// widths at t = 1/4, 1/2 and 3/4.
 #include "theory/global3/rotation_branches3.hpp"
 
 #include <Eigen/Core>
