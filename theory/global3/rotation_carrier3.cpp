@@ -24,49 +24,76 @@ double seed_fidelity(double angle) {
   return w >= 1 ? max_seed_fidelity : std::clamp(w / (1 - w), min_seed_fidelity, max_seed_fidelity);
 }
 
-Eigen::Matrix3Xd filled_seeds(const DualGraph3& graph, const ConsistentLogs& logs) {
-  const Eigen::Matrix3Xd& seed = logs.seed;
-  // The unknowns: the elements whose seed is held less than max_seed_fidelity, numbered in increasing order.
-  std::vector<Index> unknown(static_cast<std::size_t>(seed.cols()), -1), members;
-  std::vector<double> fidelity;
+namespace {
+
+/// The fill's unknowns: the elements whose seed is held less than max_seed_fidelity, numbered in increasing order.
+struct Unknowns {
+  std::vector<Index> number;     ///< per element, its number among the unknowns, or −1 when it is held
+  std::vector<Index> element;    ///< per unknown, its element
+  std::vector<double> fidelity;  ///< per unknown, ρ_i
+};
+
+Unknowns unknowns_of(const Eigen::Matrix3Xd& seed) {
+  Unknowns u{std::vector<Index>(static_cast<std::size_t>(seed.cols()), -1), {}, {}};
   for (Index i = 0; i < seed.cols(); ++i)
     if (const double rho = seed_fidelity(seed.col(i).norm()); rho < max_seed_fidelity) {
-      unknown[static_cast<std::size_t>(i)] = static_cast<Index>(members.size());
-      members.push_back(i);
-      fidelity.push_back(rho);
+      u.number[static_cast<std::size_t>(i)] = static_cast<Index>(u.element.size());
+      u.element.push_back(i);
+      u.fidelity.push_back(rho);
     }
-  Eigen::Matrix3Xd filled = seed;
-  if (members.empty()) return filled;
-  // Row u (element i), over its neighbours j with |d_ij| ≤ reliable_step, d_ij = log(R_j R_iᵀ) (n_i of them):
-  //     (ρ_i + n_i) f_i − Σ_{unknown j} f_j = ρ_i s_i + Σ_{held j} s_j − Σ_j d_ij.
-  const auto n = static_cast<Index>(members.size());
-  std::vector<Eigen::Triplet<double>> entries;
-  global::SparseFactor<double>::Block rhs(n, 3);
-  // R_i = exp [ω_i]× of the unknowns and their neighbours, each computed once.
-  std::vector<Index> slot(static_cast<std::size_t>(seed.cols()), -1);
-  std::vector<Eigen::Matrix3d> rotations;
-  const auto cache = [&](Index i) {
-    if (slot[static_cast<std::size_t>(i)] >= 0) return;
-    slot[static_cast<std::size_t>(i)] = static_cast<Index>(rotations.size());
-    rotations.push_back(local3::rotation_exp<double>(Vector3d(logs.omega.col(i))));
-  };
-  for (const Index i : members) {
-    cache(i);
-    for (int s = graph.start[static_cast<std::size_t>(i)]; s < graph.start[static_cast<std::size_t>(i) + 1]; ++s)
-      cache(graph.neighbour[static_cast<std::size_t>(s)]);
+  return u;
+}
+
+/// The relative turns d_ij = log(R_j R_iᵀ) about the unknowns, each R_i = exp [ω_i]× computed once.
+class RelativeTurns {
+ public:
+  RelativeTurns(const DualGraph3& graph, const Eigen::Matrix3Xd& omega, const std::vector<Index>& elements)
+      : omega_(omega), slot_(static_cast<std::size_t>(omega.cols()), -1) {
+    for (const Index i : elements) {
+      cache(i);
+      for (int s = graph.start[static_cast<std::size_t>(i)]; s < graph.start[static_cast<std::size_t>(i) + 1]; ++s)
+        cache(graph.neighbour[static_cast<std::size_t>(s)]);
+    }
   }
-  const auto rotation = [&](Index i) -> const Eigen::Matrix3d& {
-    return rotations[static_cast<std::size_t>(slot[static_cast<std::size_t>(i)])];
-  };
-  // d_ij from the pair in increasing order, negated for the other: the same edges kept from both ends, K symmetric.
-  const auto relative_turn = [&](Index i, Index j) -> Vector3d {
+  /// d_ij, from the pair in increasing order and negated for the other: the same edges kept from both ends, so
+  /// that the fill's matrix is symmetric.
+  Vector3d operator()(Index i, Index j) const {
     const Index a = std::min(i, j), b = std::max(i, j);
     const Vector3d d = local3::rotation_log<double>(Eigen::Matrix3d(rotation(b) * rotation(a).transpose()));
     return a == i ? d : Vector3d(-d);
-  };
+  }
+
+ private:
+  void cache(Index i) {
+    if (slot_[static_cast<std::size_t>(i)] >= 0) return;
+    slot_[static_cast<std::size_t>(i)] = static_cast<Index>(rotations_.size());
+    rotations_.push_back(local3::rotation_exp<double>(Vector3d(omega_.col(i))));
+  }
+  const Eigen::Matrix3d& rotation(Index i) const {
+    return rotations_[static_cast<std::size_t>(slot_[static_cast<std::size_t>(i)])];
+  }
+
+  const Eigen::Matrix3Xd& omega_;
+  std::vector<Index> slot_;
+  std::vector<Eigen::Matrix3d> rotations_;
+};
+
+}  // namespace
+
+Eigen::Matrix3Xd filled_seeds(const DualGraph3& graph, const ConsistentLogs& logs) {
+  const Eigen::Matrix3Xd& seed = logs.seed;
+  const Unknowns unknowns = unknowns_of(seed);
+  Eigen::Matrix3Xd filled = seed;
+  if (unknowns.element.empty()) return filled;
+  const RelativeTurns relative_turn(graph, logs.omega, unknowns.element);
+  // Row u (element i), over its neighbours j with |d_ij| ≤ reliable_step (n_i of them):
+  //     (ρ_i + n_i) f_i − Σ_{unknown j} f_j = ρ_i s_i + Σ_{held j} s_j − Σ_j d_ij.
+  const auto n = static_cast<Index>(unknowns.element.size());
+  std::vector<Eigen::Triplet<double>> entries;
+  global::SparseFactor<double>::Block rhs(n, 3);
   for (Index u = 0; u < n; ++u) {
-    const Index i = members[static_cast<std::size_t>(u)];
-    const double rho = fidelity[static_cast<std::size_t>(u)];
+    const Index i = unknowns.element[static_cast<std::size_t>(u)];
+    const double rho = unknowns.fidelity[static_cast<std::size_t>(u)];
     rhs.row(u) = rho * seed.col(i).transpose();
     double diagonal = rho;
     for (int s = graph.start[static_cast<std::size_t>(i)]; s < graph.start[static_cast<std::size_t>(i) + 1]; ++s) {
@@ -75,7 +102,7 @@ Eigen::Matrix3Xd filled_seeds(const DualGraph3& graph, const ConsistentLogs& log
       if (d_ij.norm() > reliable_step) continue;  // a crease or a fold: no small turn to integrate
       diagonal += 1;
       rhs.row(u) -= d_ij.transpose();
-      if (const Index v = unknown[static_cast<std::size_t>(j)]; v >= 0)
+      if (const Index v = unknowns.number[static_cast<std::size_t>(j)]; v >= 0)
         entries.emplace_back(u, v, -1.0);
       else
         rhs.row(u) += seed.col(j).transpose();
@@ -90,7 +117,7 @@ Eigen::Matrix3Xd filled_seeds(const DualGraph3& graph, const ConsistentLogs& log
   // min_seed_fidelity and at most max_seed_fidelity plus a degree.
   factor->factorise(K, 1);
   factor->solve_in_place(rhs, 1);
-  for (Index u = 0; u < n; ++u) filled.col(members[static_cast<std::size_t>(u)]) = rhs.row(u).transpose();
+  for (Index u = 0; u < n; ++u) filled.col(unknowns.element[static_cast<std::size_t>(u)]) = rhs.row(u).transpose();
   return filled;
 }
 
