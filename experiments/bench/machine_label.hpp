@@ -23,8 +23,8 @@ std::string machine_label(const nlohmann::json& machine);
 /// extension>, <compiler> <build flags>" from a recorded run's machine ("cpu", "cpu_flags", "compiler", "flags"):
 /// the same model can come with another vector extension (a VM's bare "AMD EPYC"), and another compiler or version
 /// moves speed ratios as much as another CPU, and so do the build's flags (warnings left out): -ffp-contract=off
-/// moved bench_exp3's eigen-qr ÷ viete on one AVX-512 machine from about 4.5 to about 5.0. A part not recorded
-/// reads "<part> not recorded".
+/// alone moved bench_exp3's eigen-qr ÷ viete on one AVX-512 machine across thesis.eig.speedup's band. A part not
+/// recorded reads "<part> not recorded".
 std::string machine_key(const nlohmann::json& machine);
 /// The build flags' part of machine_key: " <flag> <flag> …" (each space-separated word of "flags" but those starting
 /// with -W), or ", build flags not recorded".

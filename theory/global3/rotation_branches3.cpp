@@ -13,6 +13,10 @@
 
 namespace affinterp::global3 {
 
+Eigen::Vector3d relative_turn(const Eigen::Vector3d& omega_i, const Eigen::Vector3d& omega_j) {
+  return local3::rotation_log<double>(local3::rotation_exp_product<double>(omega_j, Eigen::Vector3d(-omega_i)));
+}
+
 DualGraph3 dual_graph3(const Eigen::MatrixXi& elements) {
   const int corners = static_cast<int>(elements.rows());
   const auto m = static_cast<std::size_t>(elements.cols());
@@ -115,9 +119,7 @@ struct Walk {
     omega.col(child) = local3::nearest_log<double>(principal.col(child), predicted);
     double step = (omega.col(child) - predicted).norm();
     if (step > reliable_step) {  // the parent's reference advanced by the child's turn relative to the parent
-      const Eigen::Vector3d turn = local3::rotation_log<double>(
-          Eigen::Matrix3d(local3::rotation_exp<double>(Eigen::Vector3d(principal.col(child))) *
-                          local3::rotation_exp<double>(Eigen::Vector3d(principal.col(parent))).transpose()));
+      const Eigen::Vector3d turn = relative_turn(principal.col(parent), principal.col(child));
       if (turn.norm() <= reliable_step) {
         predicted += turn;
         omega.col(child) = local3::nearest_log<double>(principal.col(child), predicted);

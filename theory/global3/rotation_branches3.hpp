@@ -42,6 +42,10 @@ struct DualGraph3 {
 /// the reference of its children.
 inline constexpr double reliable_step = 1.0;
 
+/// d = log(exp [ω_j]× exp [−ω_i]×) = log(R_j R_iᵀ), the turn from element i's rotation to element j's (principal,
+/// |d| ≤ π): small and well determined between neighbours at any |ω|, where ω_j − ω_i is not.
+Eigen::Vector3d relative_turn(const Eigen::Vector3d& omega_i, const Eigen::Vector3d& omega_j);
+
 /// The dual graph of a well-formed element list (3 or 4 rows).
 DualGraph3 dual_graph3(const Eigen::MatrixXi& elements);
 

@@ -44,40 +44,6 @@ Unknowns unknowns_of(const Eigen::Matrix3Xd& seed) {
   return u;
 }
 
-/// The relative turns d_ij = log(R_j R_iᵀ) about the unknowns, each R_i = exp [ω_i]× computed once.
-class RelativeTurns {
- public:
-  RelativeTurns(const DualGraph3& graph, const Eigen::Matrix3Xd& omega, const std::vector<Index>& elements)
-      : omega_(omega), slot_(static_cast<std::size_t>(omega.cols()), -1) {
-    for (const Index i : elements) {
-      cache(i);
-      for (int s = graph.start[static_cast<std::size_t>(i)]; s < graph.start[static_cast<std::size_t>(i) + 1]; ++s)
-        cache(graph.neighbour[static_cast<std::size_t>(s)]);
-    }
-  }
-  /// d_ij, from the pair in increasing order and negated for the other: the same edges kept from both ends, so
-  /// that the fill's matrix is symmetric.
-  Vector3d operator()(Index i, Index j) const {
-    const Index a = std::min(i, j), b = std::max(i, j);
-    const Vector3d d = local3::rotation_log<double>(Eigen::Matrix3d(rotation(b) * rotation(a).transpose()));
-    return a == i ? d : Vector3d(-d);
-  }
-
- private:
-  void cache(Index i) {
-    if (slot_[static_cast<std::size_t>(i)] >= 0) return;
-    slot_[static_cast<std::size_t>(i)] = static_cast<Index>(rotations_.size());
-    rotations_.push_back(local3::rotation_exp<double>(Vector3d(omega_.col(i))));
-  }
-  const Eigen::Matrix3d& rotation(Index i) const {
-    return rotations_[static_cast<std::size_t>(slot_[static_cast<std::size_t>(i)])];
-  }
-
-  const Eigen::Matrix3Xd& omega_;
-  std::vector<Index> slot_;
-  std::vector<Eigen::Matrix3d> rotations_;
-};
-
 }  // namespace
 
 Eigen::Matrix3Xd filled_seeds(const DualGraph3& graph, const ConsistentLogs& logs) {
@@ -85,7 +51,12 @@ Eigen::Matrix3Xd filled_seeds(const DualGraph3& graph, const ConsistentLogs& log
   const Unknowns unknowns = unknowns_of(seed);
   Eigen::Matrix3Xd filled = seed;
   if (unknowns.element.empty()) return filled;
-  const RelativeTurns relative_turn(graph, logs.omega, unknowns.element);
+  // d_ij from the pair in increasing order, negated for the other: the same edges kept from both ends, so that K
+  // is symmetric.
+  const auto d = [&](Index i, Index j) -> Vector3d {
+    return i < j ? relative_turn(logs.omega.col(i), logs.omega.col(j))
+                 : Vector3d(-relative_turn(logs.omega.col(j), logs.omega.col(i)));
+  };
   // Row u (element i), over its neighbours j with |d_ij| ≤ reliable_step (n_i of them):
   //     (ρ_i + n_i) f_i − Σ_{unknown j} f_j = ρ_i s_i + Σ_{held j} s_j − Σ_j d_ij.
   const auto n = static_cast<Index>(unknowns.element.size());
@@ -98,7 +69,7 @@ Eigen::Matrix3Xd filled_seeds(const DualGraph3& graph, const ConsistentLogs& log
     double diagonal = rho;
     for (int s = graph.start[static_cast<std::size_t>(i)]; s < graph.start[static_cast<std::size_t>(i) + 1]; ++s) {
       const int j = graph.neighbour[static_cast<std::size_t>(s)];
-      const Vector3d d_ij = relative_turn(i, j);
+      const Vector3d d_ij = d(i, j);
       if (d_ij.norm() > reliable_step) continue;  // a crease or a fold: no small turn to integrate
       diagonal += 1;
       rhs.row(u) -= d_ij.transpose();
@@ -149,9 +120,8 @@ RotationSplit3 split_along(Eigen::Matrix3Xd carrier, const Eigen::Matrix3Xd& ome
   const auto m = static_cast<std::size_t>(omega.cols());
   global::for_each_range(m, global::ranges_for(m, decompositions_per_thread), [&](std::size_t first, std::size_t last) {
     for (auto i = static_cast<Index>(first); i < static_cast<Index>(last); ++i)
-      split.remainder.col(i) =
-          local3::rotation_log<double>(Eigen::Matrix3d(local3::rotation_exp<double>(Vector3d(-split.carrier.col(i))) *
-                                                       local3::rotation_exp<double>(Vector3d(omega.col(i)))));
+      split.remainder.col(i) = local3::rotation_log<double>(
+          local3::rotation_exp_product<double>(Vector3d(-split.carrier.col(i)), Vector3d(omega.col(i))));
   });
   return split;
 }

@@ -34,9 +34,7 @@
 //     over the elements beyond a half turn, the others held at their seeds. The seeds near a full turn are
 //     replaced by their reliable neighbours' seeds carried along the relative turns, however many rings the band
 //     is wide. No element beyond a half turn, nothing to solve: f = s. Its cost is one sparse factorisation over
-//     those elements: 0.39 s for 214,491 of them on the 2-core AVX-512 machine of the report (CGAL's elephant
-//     subdivided three times, 355,712 triangles, twisted by 3π a half length; the set-up 1.53 s against 1.21 s
-//     twisted by π/2, where none is beyond a half turn).
+//     those elements (on a mesh twisted by 3π, most of them).
 //  2. Smooth. `carrier_steps` steps of ω̄_i ← ½ ω̄_i + ½ (the mean of ω̄ over the elements sharing a facet with i),
 //     from f: a diffusion over a few rings of neighbours, each element's value from the previous step only, so the
 //     same bits on any number of threads.
