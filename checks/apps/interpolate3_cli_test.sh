@@ -166,6 +166,10 @@ refused "2D locus points in 3D" interpolate --source bar.mesh --target bar90.mes
 refused "locus vertex out of range" interpolate --source bar.mesh --target bar90.mesh --locus "999:0,0,0;1,1,1"
 refused "2D-only edge direction" interpolate --source bar.mesh --target bar90.mesh --edge-direction 0:1
 refused "pin out of range" interpolate --source bar.mesh --target bar90.mesh --pin 999
+refused "negative refinement" interpolate --source bar.mesh --target bar90.mesh --arap-iterations -1
+refused "refinement beyond its cap" blend --poses bar.mesh bar90.mesh --weights 0.5,0.5 --arap-iterations 1001
+"$affinterp" shapes worm-curl --out plane 2>err || fail "shapes worm-curl: $(cat err)"
+refused "3D-only refinement in 2D" interpolate --source plane/source.obj --target plane/target.obj --arap-iterations 2
 refused "wrong weight count" blend --poses bar.mesh bar90.mesh bar170.mesh --weights 0.5,0.5
 refused "off the simplex" blend --poses bar.mesh bar90.mesh bar170.mesh --weights 0.5,0.5,0 --weights -1,2,0
 refused "not numbers" blend --poses bar.mesh bar90.mesh bar170.mesh --weights 0.5,x,0

@@ -126,6 +126,27 @@ TEST(Svd3, HasRotationsAndPositiveDescendingSingularValues) {
   EXPECT_THROW(svd3<double>(M::Zero()), std::invalid_argument);
 }
 
+// Procrustes: R maximises tr(Rᵀ M) over SO(3), checked against random rotations, for full-rank M of either sign
+// and for the rank-2 products a triangle's in-plane map gives; M = R₀ S (S SPD) gives R₀, its polar factor.
+TEST(NearestRotation, MaximisesTheTraceAgainstEveryOtherRotation) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> angle(0, pi);
+  for (int trial = 0; trial < 60; ++trial) {
+    M Mat = random_map(rng);
+    if (trial % 3 == 1) Mat.col(0) = -Mat.col(0);                               // det M < 0
+    if (trial % 3 == 2) Mat = Mat * V(1, 1, 0).asDiagonal() * random_map(rng);  // rank 2
+    const M R = nearest_rotation<double>(Mat);
+    EXPECT_LT((R.transpose() * R - M::Identity()).norm(), 1e-14);
+    EXPECT_NEAR(R.determinant(), 1, 1e-14);
+    for (int other = 0; other < 100; ++other) {
+      const M Q = rotation_exp<double>(angle(rng) * random_unit(rng)) * R;
+      EXPECT_GE((R.transpose() * Mat).trace(), (Q.transpose() * Mat).trace() - 1e-12 * Mat.norm());
+    }
+    const Svd3<double> d = svd3<double>(trial % 3 == 0 ? Mat : random_map(rng));
+    EXPECT_LT((nearest_rotation<double>(d.matrix()) - polar3(d).R).norm(), 1e-13);
+  }
+}
+
 /// The four homotopies of A built from its principal logarithms, and from ω shifted by `turns` turns.
 template <class Check>
 void for_each_homotopy(const M& A, int turns, Check check) {

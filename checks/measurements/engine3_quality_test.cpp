@@ -25,7 +25,7 @@ TEST(Engine3Quality, LinearBlendFoldsATurnedTubeWhereExpLogDoesNot) {
   const global3::Mesh3 tube = shapes3d::triangle_tube(12, 12, 4);
   const PosePair pair{"tube → twisted", tube, shapes3d::twisted(tube, 1.4 * std::numbers::pi, 4)};
   const Engine3Quality quality = engine3_quality({pair}, 5);
-  ASSERT_EQ(quality.methods.size(), 8u);
+  ASSERT_EQ(quality.methods.size(), 9u);
   ASSERT_EQ(quality.pairs, std::vector<std::string>{"tube → twisted"});
   const auto& linear_blend = quality.cells[row(quality, "per-vertex linear blend")][0];
   const auto& ef_linear = quality.cells[row(quality, "E^F, linear")][0];
@@ -37,6 +37,8 @@ TEST(Engine3Quality, LinearBlendFoldsATurnedTubeWhereExpLogDoesNot) {
   EXPECT_EQ(quality.target_folds, std::vector<long>{0});  // a twist folds no triangle within the surface
   EXPECT_EQ(linear_blend.most_inverted_away, linear_blend.most_inverted);
   EXPECT_GT(exp_log.middle_distortion, 1);
+  // a free twist: nothing for the elements' own turns to undo, so the refined frames invert none either
+  EXPECT_EQ(quality.cells[row(quality, "exp-log, 5 as-rigid-as-possible steps")][0].most_inverted, 0);
 
   const nlohmann::json written = quality;
   EXPECT_EQ(nlohmann::json(written.get<Engine3Quality>()), written);

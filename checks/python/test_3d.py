@@ -104,6 +104,15 @@ def test_interpolation_matches_the_cli(tmp_path):
                                   affinterp.Interpolation(V, W, T).frames([0, 0.5, 1]))
     np.testing.assert_array_equal(np.load(tmp_path / "sym" / "frames.npy"),
                                   affinterp.Interpolation(V, W, T, symmetric=True).frames([0, 0.5, 1]))
+    subprocess.run([CLI, "interpolate", "--source", tmp_path / "a.mesh", "--target", tmp_path / "b.mesh", "--out",
+                    tmp_path / "arap", "--frames", "3", "--format", "npy", "--arap-iterations", "3", "--pin", "0"],
+                   check=True, capture_output=True)
+    refined = affinterp.Interpolation(V, W, T, arap_iterations=3, pins=[0])
+    np.testing.assert_array_equal(np.load(tmp_path / "arap" / "frames.npy"), refined.frames([0, 0.5, 1]))
+    with open(tmp_path / "arap" / "metrics.json") as f:
+        metrics = json.load(f)
+    assert metrics["options"]["arap_iterations"] == 3
+    assert metrics["frames"][1]["energy"] == refined.energy_at(0.5)
 
 
 def rotation(omega):
@@ -174,6 +183,9 @@ def test_blend_at_a_vertex_of_the_simplex_is_that_pose(mesh):
     assert frames.shape == (3, len(V), 3)
     for k in range(3):
         np.testing.assert_allclose(frames[k], poses[k], atol=1e-9)
+    refined = affinterp.Blend(poses, F, arap_iterations=2).vertices_at(np.eye(3))
+    for k in range(3):
+        np.testing.assert_allclose(refined[k], poses[k], atol=1e-9)
     single = blend.vertices_at([0.2, 0.5, 0.3])
     assert single.shape == (len(V), 3)
     np.testing.assert_array_equal(single, blend.vertices_at([[0.2, 0.5, 0.3]])[0])
@@ -198,6 +210,10 @@ def test_bad_input_raises_one_line_value_errors():
         one_line_value_error(lambda: affinterp.Interpolation(V, W, T, **{keyword: value}), keyword)
     one_line_value_error(lambda: affinterp.Interpolation(V, W, T, barycentre_locus="0,0;1,1"), "x,y,z")
     one_line_value_error(lambda: affinterp.Interpolation(V, W, T).vertices_at(2.0), "time_range")
+    one_line_value_error(lambda: affinterp.Interpolation(V, W, T, arap_iterations=-1), "arap_iterations")
+    plane = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])
+    one_line_value_error(lambda: affinterp.Interpolation(plane, plane, np.array([[0, 1, 2]]), arap_iterations=1),
+                         "arap_iterations", "2D")
     blend = affinterp.Blend([V, W, twisted(V, 2.0)], T)
     one_line_value_error(lambda: blend.vertices_at([0.5, 0.5]), "3 weights")
     one_line_value_error(lambda: blend.metrics_at([[0.2, 0.5, 0.3]]), "w", "(k,)")

@@ -122,7 +122,7 @@ def test_python_keywords_are_the_cli_options_with_the_same_defaults(tmp_path):
     defaults = python_defaults()
     assert set(defaults) == {"homotopy", "energy", "rotation_branch", "blend_weight", "blend_weights",
                              "area_weighted", "symmetric", "pins", "loci", "edge_directions", "barycentre_locus",
-                             "time_range"}, defaults
+                             "time_range", "arap_iterations"}, defaults
     for name, text in defaults.items():
         assert name in cli, name
         expected = cli[name]

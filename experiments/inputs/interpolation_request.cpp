@@ -30,7 +30,8 @@ nlohmann::json options_json(const InterpolationRequest& request, const global::I
                          {"loci", request.loci},
                          {"edge_directions", request.edge_directions},
                          {"barycentre_locus", request.barycentre_locus},
-                         {"time_range", {used.t_begin, used.t_end}}};
+                         {"time_range", {used.t_begin, used.t_end}},
+                         {"arap_iterations", request.arap_iterations}};
   if (used.constraints.edges.size() > request.edge_directions.size()) {
     const global::EdgeDirection& edge = used.constraints.edges.back();
     json["default_edge_direction"] = std::to_string(edge.i) + ":" + std::to_string(edge.j);

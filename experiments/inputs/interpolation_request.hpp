@@ -21,6 +21,9 @@ struct InterpolationRequest {
   std::vector<std::string> pins, loci, edge_directions;
   /// The barycentre's path: the gauge of translation, "linear" (source to target) unless asked otherwise.
   std::string barycentre_locus = "linear";
+  /// 3D only: as-rigid-as-possible steps on each frame (global3::Interpolation3Options::arap_iterations). The 2D
+  /// engine has E^R itself and refuses a request that sets it.
+  int arap_iterations = 0;
 };
 
 /// The engine's options for the pair (source counter-clockwise, as check_mesh_pair leaves it): the request's
@@ -33,7 +36,8 @@ global::InterpolationOptions interpolation_options(const InterpolationRequest& r
 
 /// The options a run used, as metrics.json's "options" names them (the same names as the CLI's options and
 /// the Python keywords): homotopy, energy, rotation_branch, blend_weight, area_weighted, symmetric, pins,
-/// loci, edge_directions, barycentre_locus, time_range, and default_edge_direction when one was added.
+/// loci, edge_directions, barycentre_locus, time_range, arap_iterations, and default_edge_direction when one was
+/// added.
 nlohmann::json options_json(const InterpolationRequest& request, const global::InterpolationOptions& used);
 
 }  // namespace affinterp::io

@@ -19,16 +19,20 @@ using global3::Interpolation3;
 using global3::Interpolation3Options;
 using global3::Mesh3;
 
+/// The as-rigid-as-possible row's steps a frame (arap_refinement3.hpp): enough to see where the iteration heads.
+constexpr int arap_steps = 5;
+
 /// A way of making frames: the frames of one pair at the given times.
 struct Method {
   std::string name;
   std::function<std::vector<Eigen::Matrix3Xd>(const PosePair&, const std::vector<double>&)> frames;
 };
 
-Method engine_method(std::string name, LocalHomotopy homotopy, global::RotationBranch branch, bool symmetric) {
+/// Interpolation3 with the defaults (exp-log, consistent branches, E^F alone) changed by `set`.
+Method engine_method(std::string name, const std::function<void(Interpolation3Options&)>& set) {
+  Interpolation3Options options;
+  set(options);
   return {std::move(name), [=](const PosePair& pair, const std::vector<double>& times) {
-            Interpolation3Options options;
-            options.homotopy = homotopy, options.rotation_branch = branch, options.symmetric = symmetric;
             return Interpolation3(pair.source, pair.target, options).vertices_at(times);
           }};
 }
@@ -54,10 +58,13 @@ std::vector<Method> methods() {
   for (auto [name, homotopy] : {std::pair{"E^F, linear", LocalHomotopy::linear},
                                 {"E^F, polar", LocalHomotopy::polar},
                                 {"E^F, SVD", LocalHomotopy::svd}})
-    all.push_back(engine_method(name, homotopy, RotationBranch::consistent, false));
-  all.push_back(engine_method("E^F, exp-log, principal branch", LocalHomotopy::exp, RotationBranch::principal, false));
-  all.push_back(engine_method("E^F, exp-log", LocalHomotopy::exp, RotationBranch::consistent, false));
-  all.push_back(engine_method("E^F, exp-log, symmetrised", LocalHomotopy::exp, RotationBranch::consistent, true));
+    all.push_back(engine_method(name, [homotopy](auto& o) { o.homotopy = homotopy; }));
+  all.push_back(
+      engine_method("E^F, exp-log, principal branch", [](auto& o) { o.rotation_branch = RotationBranch::principal; }));
+  all.push_back(engine_method("E^F, exp-log", [](auto&) {}));
+  all.push_back(engine_method("E^F, exp-log, symmetrised", [](auto& o) { o.symmetric = true; }));
+  all.push_back(engine_method("exp-log, " + std::to_string(arap_steps) + " as-rigid-as-possible steps",
+                              [](auto& o) { o.arap_iterations = arap_steps; }));
   return all;
 }
 

@@ -5,7 +5,8 @@
 //
 // Methods: the per-vertex linear blend (1 − t)P + tQ; the deformation application's stand-in (theory/deformation:
 // exp-log on principal rotations, edge form, vertex 0 anchored); Interpolation3 with E^F and each local homotopy
-// (linear, polar, SVD, exp-log on principal and on consistent rotation branches), and exp-log symmetrised.
+// (linear, polar, SVD, exp-log on principal and on consistent rotation branches), exp-log symmetrised, and exp-log
+// with as-rigid-as-possible steps on each frame (arap_refinement3.hpp: the 3D counterpart of E^R without its scale).
 //
 // Inversion is measured against one reference for every method, so that the rows compare: the exp-log local maps
 // A_i(t) on consistent branches (frame_metrics3.hpp: a triangle whose normal opposes A_i(t) n_p). Distortion: the

@@ -17,12 +17,13 @@ struct RowSpec {
   const char* what;
   double limit_ms;
 };
-const std::array<RowSpec, 6> kRows{{
+const std::array<RowSpec, 7> kRows{{
     {"3d/setup", "set-up (decompositions, rotation branches, E^F factorisation)", 200},
     {"3d/frame-1-thread", "one frame, one thread (CPU time)", 0},
     {"3d/frame-2-threads/real_time", "one frame, two threads (wall time)", 5},
     {"3d/blend3", "one frame of the blend of three poses, one thread", 0},
     {"3d/blend3-2-threads/real_time", "one frame of the blend of three poses, two threads (wall time)", 5},
+    {"3d/arap-step", "one as-rigid-as-possible step on the middle frame (rotations and E^F's solve), one thread", 0},
     {"3d/stand-in", "one frame of the stand-in (theory/deformation), one thread", 0},
 }};
 

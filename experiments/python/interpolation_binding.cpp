@@ -35,6 +35,7 @@ struct Keywords {
   std::vector<std::string> loci, edge_directions;
   std::string barycentre_locus;
   std::pair<double, double> time_range;
+  int arap_iterations;
 };
 
 /// The request the CLI would make for the same keywords (experiments/inputs/interpolation_request.hpp).
@@ -52,6 +53,7 @@ io::InterpolationRequest request_of(const Keywords& k) {
   std::tie(options.t_begin, options.t_end) = k.time_range;
   for (const py::object& pin : k.pins) request.pins.push_back(py::str(pin));
   request.loci = k.loci, request.edge_directions = k.edge_directions, request.barycentre_locus = k.barycentre_locus;
+  if (k.arap_iterations != 0) value_error("arap_iterations: a 3D keyword; for 2D meshes energy='R' is E^R itself");
   return request;
 }
 
@@ -67,7 +69,7 @@ SpaceKeywords space_keywords(const Keywords& k) {
   if (k.blend_weight != defaults.blend_weight) refuse("blend_weight");
   if (k.blend_weights) refuse("blend_weights");
   if (!k.edge_directions.empty()) refuse("edge_directions");
-  SpaceKeywords space{k.homotopy, k.rotation_branch,  k.area_weighted, k.symmetric, {},
+  SpaceKeywords space{k.homotopy, k.rotation_branch,  k.area_weighted, k.symmetric, k.arap_iterations, {},
                       k.loci,     k.barycentre_locus, k.time_range};
   for (const py::object& pin : k.pins) space.pins.push_back(py::str(pin));
   return space;
@@ -212,7 +214,8 @@ Parameters (the names, defaults and rules of `affinterp interpolate`, which are 
 With E^S, E^R or a blend and no pins, loci or edge directions, one edge fixes rotation and scale, as in the
 CLI. With (n, 3) vertices and (m, 3) triangles or (m, 4) tetrahedra the 3D engine runs (E^F; homotopy,
 rotation_branch, area_weighted, symmetric, pins, loci 'V[@C]:x,y,z;...', barycentre_locus 'linear[@C]', 'none' or
-'x,y,z;...[@C]', time_range), frames are (n, 3),
+'x,y,z;...[@C]', time_range, and arap_iterations: as-rigid-as-possible steps on each frame, E^R with its scale
+held at 1, each costing several frames), frames are (n, 3),
 and the 2D-only keywords raise ValueError. Bad input (shapes, NaN, degenerate or flipped triangles, unknown
 names, ...) raises ValueError with the CLI's one-line message.)";
   return doc;
@@ -227,12 +230,12 @@ void bind_interpolation(py::module_& m) {
                        std::optional<std::vector<double>> blend_weights, bool area_weighted, bool symmetric,
                        std::vector<py::object> pins, std::vector<std::string> loci,
                        std::vector<std::string> edge_directions, std::string barycentre_locus,
-                       std::pair<double, double> time_range) {
+                       std::pair<double, double> time_range, int arap_iterations) {
              return std::make_unique<Interpolation>(
                  V0, V1, F,
                  Keywords{std::move(homotopy), std::move(energy), std::move(rotation_branch), blend_weight,
                           std::move(blend_weights), area_weighted, symmetric, std::move(pins), std::move(loci),
-                          std::move(edge_directions), std::move(barycentre_locus), time_range});
+                          std::move(edge_directions), std::move(barycentre_locus), time_range, arap_iterations});
            }),
            py::arg("V0"), py::arg("V1"), py::arg("F"), py::kw_only(),
            py::arg("homotopy") = global::to_string(defaults.homotopy),
@@ -243,7 +246,8 @@ void bind_interpolation(py::module_& m) {
            py::arg("pins") = std::vector<py::object>{}, py::arg("loci") = std::vector<std::string>{},
            py::arg("edge_directions") = std::vector<std::string>{},
            py::arg("barycentre_locus") = request_defaults.barycentre_locus,
-           py::arg("time_range") = std::pair<double, double>{defaults.t_begin, defaults.t_end})
+           py::arg("time_range") = std::pair<double, double>{defaults.t_begin, defaults.t_end},
+           py::arg("arap_iterations") = request_defaults.arap_iterations)
       .def("vertices_at", &Interpolation::vertices_at, py::arg("t"),
            "v(t) as an (n, 2) array: the minimiser of E_t. ValueError outside t_range.")
       .def("frames", &Interpolation::frames, py::arg("times"),

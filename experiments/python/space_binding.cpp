@@ -33,6 +33,7 @@ global3::Interpolation3Options options3(const SpaceKeywords& k, Eigen::Index ver
   options.homotopy = global::parse_option<global::LocalHomotopy>(k.homotopy);
   options.rotation_branch = global::parse_option<global::RotationBranch>(k.rotation_branch);
   options.area_weighted = k.area_weighted, options.symmetric = k.symmetric;
+  options.arap_iterations = k.arap_iterations;
   options.constraints = io::parse_constraints3(k.pins, k.loci, k.barycentre_locus, vertex_count);
   return options;
 }
@@ -51,7 +52,7 @@ py::array_t<double> stacked(const std::vector<Eigen::Matrix3Xd>& frames, Eigen::
 class SpaceBlend {
  public:
   SpaceBlend(const py::iterable& poses, const py::object& F, bool allow_extrapolation,
-             const std::string& rotation_branch, bool area_weighted) {
+             const std::string& rotation_branch, bool area_weighted, int arap_iterations) {
     const Eigen::MatrixXi elements3 = elements(F, "F");
     std::vector<global3::Mesh3> meshes;
     std::vector<std::string> names;
@@ -63,6 +64,7 @@ class SpaceBlend {
     check_meshes3(meshes, names);
     global3::Blend3Options options;
     options.allow_extrapolation = allow_extrapolation, options.area_weighted = area_weighted;
+    options.arap_iterations = arap_iterations;
     options.rotation_branch = global::parse_option<global::RotationBranch>(rotation_branch);
     engine_ = translated([&] { return std::make_unique<global3::Blend3>(meshes, options); });
     vertex_count_ = meshes[0].vertex_count();
@@ -213,11 +215,12 @@ vectors.
   allow_extrapolation  accept weights off the simplex (a negative entry, or a sum other than 1)
   rotation_branch      'consistent' (logarithms consistent over neighbours) or 'principal'
   area_weighted        weigh each element by its rest area or volume
+  arap_iterations      as-rigid-as-possible steps on each frame (as Interpolation's)
 Bad input raises ValueError with a one-line message.)")
-      .def(py::init<const py::iterable&, const py::object&, bool, const std::string&, bool>(), py::arg("poses"),
+      .def(py::init<const py::iterable&, const py::object&, bool, const std::string&, bool, int>(), py::arg("poses"),
            py::arg("F"), py::kw_only(), py::arg("allow_extrapolation") = false,
            py::arg("rotation_branch") = global::to_string(global3::Blend3Options{}.rotation_branch),
-           py::arg("area_weighted") = true)
+           py::arg("area_weighted") = true, py::arg("arap_iterations") = global3::Blend3Options{}.arap_iterations)
       .def("vertices_at", &SpaceBlend::vertices_at, py::arg("w"),
            "The blend for weights w: shape (K,) gives (n, 3), shape (frames, K) gives (frames, n, 3). ValueError "
            "for a wrong count or, without allow_extrapolation, weights off the simplex.")

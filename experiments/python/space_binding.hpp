@@ -17,6 +17,7 @@ namespace affinterp::python {
 struct SpaceKeywords {
   std::string homotopy, rotation_branch;
   bool area_weighted = true, symmetric = false;
+  int arap_iterations = 0;
   std::vector<std::string> pins, loci;
   std::string barycentre_locus;
   std::pair<double, double> time_range;

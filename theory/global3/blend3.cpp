@@ -1,6 +1,7 @@
 #include "theory/global3/blend3.hpp"
 
 #include "theory/global/parallel_ranges.hpp"
+#include "theory/global3/arap_refinement3.hpp"
 #include "theory/global3/element_maps3.hpp"
 #include "theory/global3/frame_threads3.hpp"
 #include "theory/global3/local_maps3.hpp"
@@ -37,6 +38,7 @@ struct Blend3::Engine {
         system(rest, options.area_weighted, options.constraints, options.back_end),
         targets(options.constraints, poses),
         threads(frame_threads3(options.frame_threads, rest)) {
+    require_arap_iterations(options.arap_iterations);
     const DualGraph3 graph = dual_graph3(rest.elements);
     for (std::size_t k = 0; k < poses.size(); ++k)
       decompose(element_maps(rest, poses[k]), graph, k == 0 ? nullptr : &omega.back());
@@ -117,10 +119,14 @@ Eigen::Matrix3Xd Blend3::Engine::frame(const Eigen::VectorXd& w, std::size_t thr
   const auto mapped = Clock::now();
   PoissonSystem3::Block b = system.right_hand_side(A, threads_);
   const auto assembled = Clock::now();
-  Eigen::Matrix3Xd v = system.solve(std::move(b), targets.at(w), threads_);
+  const ConstraintTargets3 at_w = targets.at(w);
+  Eigen::Matrix3Xd v = system.solve(std::move(b), at_w, threads_);
+  const auto solved = Clock::now();
+  v = arap_refined(system, A, at_w, std::move(v), options.arap_iterations, threads_);
   if (timings) {
     const auto seconds = [](auto from, auto to) { return std::chrono::duration<double>(to - from).count(); };
-    *timings = {seconds(start, mapped), seconds(mapped, assembled), seconds(assembled, Clock::now())};
+    *timings = {seconds(start, mapped), seconds(mapped, assembled), seconds(assembled, solved),
+                seconds(solved, Clock::now())};
   }
   return v;
 }

@@ -39,6 +39,7 @@ struct Blend3Options {
   /// set: they extrapolate beyond the poses.
   bool allow_extrapolation = false;
   std::optional<global::SparseBackEnd> back_end;
+  int arap_iterations = 0;        ///< as Interpolation3Options::arap_iterations
   std::size_t frame_threads = 0;  ///< as Interpolation3Options::frame_threads
 };
 

@@ -1,6 +1,7 @@
 #include "theory/global3/interpolation3.hpp"
 
 #include "theory/global/parallel_ranges.hpp"
+#include "theory/global3/arap_refinement3.hpp"
 #include "theory/global3/element_maps3.hpp"
 #include "theory/global3/element_paths3.hpp"
 #include "theory/global3/frame_threads3.hpp"
@@ -46,6 +47,7 @@ struct Interpolation3::Engine {
         system(rest_poses(s, t, options.symmetric), options.area_weighted, options.constraints, options.back_end),
         targets(options.constraints, s.vertices, t.vertices),
         threads(frame_threads3(options.frame_threads, s)) {
+    require_arap_iterations(options.arap_iterations);
     if (options.symmetric) reverse.emplace(element_maps(t, s), options.homotopy, paths);
   }
 
@@ -70,10 +72,14 @@ Eigen::Matrix3Xd Interpolation3::Engine::frame(double t, std::size_t threads_, F
   const auto mapped = Clock::now();
   PoissonSystem3::Block b = system.right_hand_side(A, threads_);
   const auto assembled = Clock::now();
-  Eigen::Matrix3Xd v = system.solve(std::move(b), targets.at(t), threads_);
+  const ConstraintTargets3 at_t = targets.at(t);
+  Eigen::Matrix3Xd v = system.solve(std::move(b), at_t, threads_);
+  const auto solved = Clock::now();
+  v = arap_refined(system, A, at_t, std::move(v), options.arap_iterations, threads_);
   if (timings) {
     const auto seconds = [](auto from, auto to) { return std::chrono::duration<double>(to - from).count(); };
-    *timings = {seconds(start, mapped), seconds(mapped, assembled), seconds(assembled, Clock::now())};
+    *timings = {seconds(start, mapped), seconds(mapped, assembled), seconds(assembled, solved),
+                seconds(solved, Clock::now())};
   }
   return v;
 }
@@ -115,7 +121,9 @@ ConstraintTargets3 Interpolation3::targets_at(double t) const { return engine_->
 double Interpolation3::energy_at(double t, const Eigen::Matrix3Xd& v) const {
   if (v.cols() != engine_->system.vertex_count()) throw std::invalid_argument("energy_at: v needs one column a vertex");
   engine_->require_time(t);
-  return engine_->system.energy(engine_->term_maps(t, engine_->threads), v, targets_at(t));
+  const std::vector<Eigen::Matrix3d> A = engine_->term_maps(t, engine_->threads);
+  if (engine_->options.arap_iterations > 0) return arap_energy(engine_->system, A, v, targets_at(t));
+  return engine_->system.energy(A, v, targets_at(t));
 }
 
 const Eigen::Matrix3Xd& Interpolation3::rotation_logs() const { return engine_->paths.rotation_logs(); }

@@ -11,9 +11,9 @@
 // numbers, so that min_{s,δ} ‖s R_δ A − B‖² is a Hermitian form in the vertices; 3D similarities s R (R ∈ SO(3))
 // form no field, the minimum over R is an orthogonal Procrustes problem whose minimiser is not linear in B, and the
 // energy is no longer a quadratic form: no one-solve-per-frame counterpart exists. E^S minimises over the same
-// similarities and fails the same way. The nearest sound 3D counterpart is a local/global (as-rigid-as-possible)
-// refinement of each frame, an iteration of per-element SVDs and solves with this factor (a frame's cost times the
-// iterations); it is not built.
+// similarities and fails the same way. The nearest sound 3D counterpart is offered: `arap_iterations` local/global
+// (as-rigid-as-possible) steps on each frame, E^R with its scale held at 1, with this factor (arap_refinement3.hpp;
+// each costs several frames).
 //
 // The symmetrised E′(t) = E(t) + E^{−1}(1 − t) (Kaji's "Improvements", the 2D engine's `symmetric`) carries over
 // for E^F: the reverse problem fits the target's elements to their reverse homotopies Ā_i(1 − t) between I and
@@ -51,6 +51,9 @@ struct Interpolation3Options {
   /// the two barycentres or its B-spline (constraints3.hpp).
   Constraints3 constraints;
   std::optional<global::SparseBackEnd> back_end;  ///< none: chosen by the mesh's size
+  /// As-rigid-as-possible steps on each E^F frame (arap_refinement3.hpp): each element may turn its A_i(t), so
+  /// the frame keeps the local maps' stretches and lets rotations follow constraints and neighbours. 0: none.
+  int arap_iterations = 0;
   /// Threads one frame's loops and solve may use; 0: chosen by the mesh's size (small meshes: one).
   std::size_t frame_threads = 0;
   /// exp-log's symmetric exponentials S^t = exp(t log S), one batch per exp_chunk elements; empty:
@@ -63,7 +66,7 @@ struct Interpolation3Options {
 class Interpolation3 {
  public:
   /// Throws global::RefusedProblem (global::InvalidMesh for the meshes: mesh3_validation.hpp) for meshes that
-  /// are not a valid pair, bad constraints, or an ill-posed system.
+  /// are not a valid pair, bad constraints, an ill-posed system or a negative arap_iterations.
   Interpolation3(const Mesh3& source, const Mesh3& target, Interpolation3Options options = {});
   ~Interpolation3();
   Interpolation3(Interpolation3&&) noexcept;
@@ -84,7 +87,8 @@ class Interpolation3 {
   std::vector<Eigen::Matrix3d> local_maps_at(double t) const;
   /// Where the constraints want the vertices at t.
   ConstraintTargets3 targets_at(double t) const;
-  /// The energy vertices_at(t) minimises, at the vertices v (3 × n).
+  /// The energy vertices_at(t) minimises, at the vertices v (3 × n): E^F (E′ symmetrised) plus C; with
+  /// arap_iterations, E^ARAP (arap_refinement3.hpp), which the iterations lower.
   double energy_at(double t, const Eigen::Matrix3Xd& v) const;
   /// ω_i (column i): the rotation logarithm of each element after the branch choice.
   const Eigen::Matrix3Xd& rotation_logs() const;

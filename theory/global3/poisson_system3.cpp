@@ -185,16 +185,34 @@ Eigen::Matrix3Xd PoissonSystem3::solve(Block b, const ConstraintTargets3& target
   return b.transpose();
 }
 
+namespace {
+
+/// X_s: term s's edges in the frame v, the columns beyond d zero as E_s⁺'s rows are.
+Matrix3d frame_edges(const PoissonSystem3::Data& data, const Eigen::Matrix3Xd& v, Index s) {
+  Matrix3d X = Matrix3d::Zero();
+  for (Index c = 1; c < data.elements.rows(); ++c)
+    X.col(c - 1) = v.col(data.elements(c, s)) - v.col(data.elements(0, s));
+  return X;
+}
+
+}  // namespace
+
+std::vector<Matrix3d> PoissonSystem3::gradients(const Eigen::Matrix3Xd& v, std::size_t threads) const {
+  const Data& data = *data_;
+  std::vector<Matrix3d> B(static_cast<std::size_t>(data.elements.cols()));
+  global::for_each_range(B.size(), threads, [&](std::size_t first, std::size_t last) {
+    for (std::size_t s = first; s < last; ++s) B[s] = frame_edges(data, v, static_cast<Index>(s)) * data.pinv[s];
+  });
+  return B;
+}
+
 double PoissonSystem3::energy(std::span<const Matrix3d> A, const Eigen::Matrix3Xd& v,
                               const ConstraintTargets3& targets) const {
   const Data& data = *data_;
   double E = 0;
   for (Index i = 0; i < data.elements.cols(); ++i) {
-    Matrix3d X = Matrix3d::Zero();  // the frame's edges, the columns beyond d zero as E_i⁺'s rows are
-    for (Index c = 1; c < data.elements.rows(); ++c)
-      X.col(c - 1) = v.col(data.elements(c, i)) - v.col(data.elements(0, i));
     const auto s = static_cast<std::size_t>(i);
-    E += data.weights[i] * ((X - A[s] * data.edges[s]) * data.pinv[s]).squaredNorm();
+    E += data.weights[i] * ((frame_edges(data, v, i) - A[s] * data.edges[s]) * data.pinv[s]).squaredNorm();
   }
   const auto& pinned = data.vertex_terms;
   for (std::size_t j = 0; j < pinned.size(); ++j)

@@ -58,6 +58,10 @@ class PoissonSystem3 {
   /// The minimiser v (3 × n) for the right-hand side b and the constraints' targets. Const and safe to call
   /// from several threads at once.
   Eigen::Matrix3Xd solve(Block b, const ConstraintTargets3& targets, std::size_t threads) const;
+  /// B_s = X_s E_s⁺ of every term at the vertices v (3 × n): the linear part of the map from the term's rest
+  /// element to v's (a triangle's in-plane part), the matrix its E^F term compares with A_s. The same bits on any
+  /// number of threads.
+  std::vector<Eigen::Matrix3d> gradients(const Eigen::Matrix3Xd& v, std::size_t threads) const;
   /// E(v) for the maps A and the targets: E^F's sum plus C.
   double energy(std::span<const Eigen::Matrix3d> A, const Eigen::Matrix3Xd& v, const ConstraintTargets3& targets) const;
 

@@ -1,8 +1,7 @@
 #include "theory/global3/target_folds3.hpp"
 
 #include "theory/global/vertex_stars.hpp"
-
-#include <Eigen/SVD>
+#include "theory/local3/nearest_rotation3.hpp"
 
 #include <algorithm>
 
@@ -12,17 +11,15 @@ using Eigen::Index;
 
 namespace {
 
-/// The rotation R minimising Σ_k ‖(q_k − q̄) − R (p_k − p̄)‖² over the vertices `ring` (Kabsch).
+/// The rotation R minimising Σ_k ‖(q_k − q̄) − R (p_k − p̄)‖² over the vertices `ring` (Kabsch): the rotation nearest
+/// to the cross-covariance Σ_k (q_k − q̄)(p_k − p̄)ᵀ.
 Eigen::Matrix3d fitted_rotation(const Eigen::Matrix3Xd& p, const Eigen::Matrix3Xd& q, const std::vector<Index>& ring) {
   Eigen::Vector3d p_mean = Eigen::Vector3d::Zero(), q_mean = Eigen::Vector3d::Zero();
   for (const Index k : ring) p_mean += p.col(k), q_mean += q.col(k);
   p_mean /= static_cast<double>(ring.size()), q_mean /= static_cast<double>(ring.size());
   Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
-  for (const Index k : ring) H += (p.col(k) - p_mean) * (q.col(k) - q_mean).transpose();
-  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Eigen::Matrix3d V = svd.matrixV();
-  if ((V * svd.matrixU().transpose()).determinant() < 0) V.col(2) = -V.col(2);
-  return V * svd.matrixU().transpose();
+  for (const Index k : ring) H += (q.col(k) - q_mean) * (p.col(k) - p_mean).transpose();
+  return local3::nearest_rotation(H);
 }
 
 Eigen::Vector3d normal(const Eigen::Matrix3Xd& v, const Mesh3& mesh, Index i) {

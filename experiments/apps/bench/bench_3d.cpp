@@ -5,13 +5,15 @@
 // frame at a time on one thread (CPU time), 3d/frame-2-threads on two (wall time); 3d/frame-parts the same frame with
 // its parts as counters (local maps with the exponential, right-hand side, solve; FrameTimings); 3d/blend3 one frame
 // of the N-way blend of three poses (cat-0, cat-4, cat-7; or the elephant's rest, bend, twist) on one thread,
-// 3d/blend3-2-threads on two (wall time); 3d/stand-in the deformation application's pipeline (theory/deformation,
-// one thread) on the same pair; 3d/app/<exp> a frame of Interpolation3 with another symmetric exponential of thesis
-// ch. 3 (the application claim's ratio, measured in the real engine).
+// 3d/blend3-2-threads on two (wall time); 3d/arap-step one as-rigid-as-possible step on the middle frame
+// (arap_refinement3.hpp: what each of arap_iterations adds to a frame), one thread; 3d/stand-in the deformation
+// application's pipeline (theory/deformation, one thread) on the same pair; 3d/app/<exp> a frame of Interpolation3 with
+// another symmetric exponential of thesis ch. 3 (the application claim's ratio, measured in the real engine).
 #include "experiments/apps/bench/bench_context.hpp"
 #include "experiments/bench/speed_figures.hpp"
 #include "experiments/inputs/shapes3d/demo_poses.hpp"
 #include "theory/deformation/deformation.hpp"
+#include "theory/global3/arap_refinement3.hpp"
 #include "theory/global3/blend3.hpp"
 #include "theory/global3/interpolation3.hpp"
 #include "theory/sym3/algorithms.hpp"
@@ -138,6 +140,19 @@ void blend3(benchmark::State& state, std::size_t threads) {
   count_triangles(state);
 }
 
+void arap_step(benchmark::State& state) {
+  if (skip_without_poses(state)) return;
+  const global3::Interpolation3& one = engine("threads 1", 1);
+  const std::vector<Eigen::Matrix3d> A = one.local_maps_at(0.5);
+  const global3::ConstraintTargets3 targets = one.targets_at(0.5);
+  const Eigen::Matrix3Xd v = one.vertices_at(0.5);
+  for (auto _ : state) {
+    Eigen::Matrix3Xd refined = global3::arap_refined(one.system(), A, targets, v, 1, 1);
+    benchmark::DoNotOptimize(refined.data());
+  }
+  count_triangles(state);
+}
+
 void stand_in(benchmark::State& state) {
   if (skip_without_poses(state)) return;
   const auto surface = [](const Mesh3& m) { return sym3::Mesh3{m.vertices, m.elements}; };
@@ -167,6 +182,7 @@ void register_all() {
   configure(benchmark::RegisterBenchmark("3d/frame-parts", frame_parts)->MinTime(kMinSeconds));
   configure(benchmark::RegisterBenchmark("3d/blend3", blend3, 1)->MinTime(kMinSeconds));
   configure(benchmark::RegisterBenchmark("3d/blend3-2-threads", blend3, 2)->UseRealTime()->MinTime(kMinSeconds));
+  configure(benchmark::RegisterBenchmark("3d/arap-step", arap_step)->MinTime(kMinSeconds));
   configure(benchmark::RegisterBenchmark("3d/stand-in", stand_in)->MinTime(kMinSeconds));
   for (const auto& variant : sym3::exp_variants())
     if ("app/" + variant.name == names::app_diag || "app/" + variant.name == names::app_improved_sd)

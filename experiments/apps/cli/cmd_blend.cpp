@@ -130,6 +130,7 @@ void write_blend(const BlendOptions& o, const global3::Blend3& blend, const io::
   document["options"] = {{"rotation_branch", global::to_string(o.engine.rotation_branch)},
                          {"area_weighted", o.engine.area_weighted},
                          {"allow_extrapolation", o.engine.allow_extrapolation},
+                         {"arap_iterations", o.engine.arap_iterations},
                          {"format", o.format},
                          {"metrics", o.metrics}};
   document["frames"] = entries;
@@ -228,6 +229,9 @@ void add_blend_outputs(CLI::App& cmd, BlendOptions& o) {
   cmd.add_flag("--area-weighted,!--no-area-weighted", o.engine.area_weighted,
                "Weight each element by its rest area or volume (--no-area-weighted: the plain sum)")
       ->default_str("true");
+  cmd.add_option("--arap-iterations", o.engine.arap_iterations,
+                 "As-rigid-as-possible steps on each frame, as interpolate's --arap-iterations")
+      ->capture_default_str();
   cmd.add_option("--out", o.out, "Output folder")->required();
   cmd.add_option("--format", o.format, "Frame files: obj (.mesh for tetrahedra) or npy (frames, vertices, 3)")
       ->check(CLI::IsMember({"obj", "npy"}))

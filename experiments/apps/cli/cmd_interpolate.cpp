@@ -341,7 +341,11 @@ void run_any(const InterpolateOptions& o, const CLI::App& cmd) {
   } catch (const io::MeshFileError& e) {
     throw CommandFailed(e.what(), 1);
   }
-  if (!run3.source_mesh && !run3.target_mesh) return run(o);
+  if (!run3.source_mesh && !run3.target_mesh) {
+    if (cmd.count("--arap-iterations") > 0)
+      throw CommandFailed("--arap-iterations: a 3D option; for 2D meshes --energy R is E^R itself", usage_error);
+    return run(o);
+  }
   refuse_planar_only_options(cmd, o.request);
   run3.source = o.source, run3.target = o.target, run3.out = o.out, run3.request = o.request;
   run3.times = frame_times(o, run3.request.options);
@@ -379,6 +383,10 @@ void add_engine_options(CLI::App& cmd, InterpolateOptions& o) {
       ->default_str(engine.area_weighted ? "true" : "false");
   cmd.add_flag("--symmetric", engine.symmetric, "Symmetric energy E(t) + E^-1(1-t)")
       ->default_str(engine.symmetric ? "true" : "false");
+  cmd.add_option("--arap-iterations", o.request.arap_iterations,
+                 "3D: as-rigid-as-possible steps on each E^F frame (each element may turn its A_i(t): E^R with the "
+                 "scale held at 1; each step costs several frames); 2D has --energy R itself")
+      ->capture_default_str();
 }
 
 /// The constraints C of Kaji §4, in constraint_spec.hpp's syntax.

@@ -26,6 +26,7 @@ global3::Interpolation3Options engine_options3(const io::InterpolationRequest& r
   options.rotation_branch = request.options.rotation_branch;
   options.area_weighted = request.options.area_weighted;
   options.symmetric = request.options.symmetric;
+  options.arap_iterations = request.arap_iterations;
   try {
     options.constraints = io::parse_constraints3(request.pins, request.loci, request.barycentre_locus, vertex_count);
   } catch (const std::invalid_argument& e) {
@@ -44,7 +45,8 @@ nlohmann::json options3_json(const Interpolate3Run& run) {
   return options;
 }
 
-/// Each frame's file and metrics.json entry: t, E^F's energy (with the constraints), the quality metrics.
+/// Each frame's file and metrics.json entry: t, the energy the frame minimises (E^F with the constraints; E^ARAP
+/// after --arap-iterations), the quality metrics.
 nlohmann::json write_frames(const Interpolate3Run& run, const global3::Interpolation3& interpolation,
                             const global3::Mesh3& source, bool reoriented, const std::vector<Eigen::Matrix3Xd>& frames,
                             const std::vector<Eigen::Index>& folds, const fs::path& staging) {
