@@ -1,6 +1,7 @@
 // target_folds3.hpp on a bumpy grid of triangles: a vertex dragged across its neighbours turns over exactly the
 // triangles whose signed area in the plane changes sign, wherever the target is then rotated (by more than π/2, so
-// that the fitted rotation is what tells them apart) or moved; a rigid motion folds none; tetrahedra have none.
+// that the fitted rotation is what tells them apart) or moved; a rigid motion folds none; a blend's poses each
+// fold their own; tetrahedra have none.
 #include "theory/global3/target_folds3.hpp"
 #include "checks/global3/meshes3.hpp"
 
@@ -68,6 +69,24 @@ TEST(TargetFolds3, NearMarksTheFoldsAndEveryElementSharingAVertexWithOne) {
       for (int e = 0; e < 3; ++e) shares |= mesh.elements(c, i) == mesh.elements(e, 0);
     EXPECT_EQ(near[static_cast<std::size_t>(i)] != 0, shares) << i;
   }
+}
+
+// A blend's poses: each folds what it folds against the first, and the mask covers every pose's folds at once.
+TEST(TargetFolds3, PoseFoldsAreEachPosesAgainstTheFirstAndTheMaskTheirUnion) {
+  const Mesh3 source = bumpy_grid(8);
+  Mesh3 left = source, right = source;
+  left.vertices.col(2 * 9 + 2).head<2>() += Eigen::Vector2d(1.6, 0.3);
+  right.vertices.col(6 * 9 + 6).head<2>() += Eigen::Vector2d(-1.6, 0.2);
+  const std::vector<Mesh3> poses{source, left, right};
+  const std::vector<std::vector<Index>> folds = pose_folds(poses);
+  ASSERT_EQ(folds.size(), 3u);
+  EXPECT_TRUE(folds[0].empty());
+  EXPECT_EQ(folds[1], target_folds(source, left));
+  EXPECT_EQ(folds[2], target_folds(source, right));
+  std::vector<Index> both = folds[1];
+  both.insert(both.end(), folds[2].begin(), folds[2].end());
+  EXPECT_EQ(near_pose_folds(poses, folds), near_folds(source, both));
+  EXPECT_TRUE(near_pose_folds({source, source}, pose_folds({source, source})).empty());
 }
 
 TEST(TargetFolds3, TetrahedraHaveNone) {

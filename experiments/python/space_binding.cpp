@@ -99,12 +99,7 @@ class SpaceBlend {
     {
       py::gil_scoped_release unlocked;
       std::call_once(folds_found_, [&] {  // the CLI's mask: at or beside the folds of any pose against the first
-        std::vector<Eigen::Index> folds;
-        for (std::size_t k = 1; k < poses_.size(); ++k) {
-          const std::vector<Eigen::Index> pose = global3::target_folds(poses_[0], poses_[k]);
-          folds.insert(folds.end(), pose.begin(), pose.end());
-        }
-        if (!folds.empty()) near_folds_ = global3::near_folds(poses_[0], folds);
+        near_folds_ = global3::near_pose_folds(poses_, global3::pose_folds(poses_));
       });
       translated([&] {
         const Eigen::Matrix3Xd v = engine_->vertices_at(vector);

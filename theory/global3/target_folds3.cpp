@@ -49,6 +49,20 @@ std::vector<Index> target_folds(const Mesh3& source, const Mesh3& target) {
   return folds;
 }
 
+std::vector<std::vector<Index>> pose_folds(const std::vector<Mesh3>& poses) {
+  std::vector<std::vector<Index>> folds(poses.size());
+  for (std::size_t k = 1; k < poses.size(); ++k) folds[k] = target_folds(poses[0], poses[k]);
+  return folds;
+}
+
+std::vector<unsigned char> near_pose_folds(const std::vector<Mesh3>& poses,
+                                           const std::vector<std::vector<Index>>& folds) {
+  std::vector<Index> all;
+  for (const std::vector<Index>& pose : folds) all.insert(all.end(), pose.begin(), pose.end());
+  if (all.empty()) return {};
+  return near_folds(poses.front(), all);
+}
+
 std::vector<unsigned char> near_folds(const Mesh3& mesh, const std::vector<Index>& folds) {
   std::vector<unsigned char> at_fold_vertex(static_cast<std::size_t>(mesh.vertex_count()), 0);
   for (const Index i : folds)

@@ -23,6 +23,14 @@ namespace affinterp::global3 {
 /// none for tetrahedra, whose inversion is det ≤ 0 and refused by mesh3_validation.hpp.
 std::vector<Eigen::Index> target_folds(const Mesh3& source, const Mesh3& target);
 
+/// For a blend: per pose k, the triangles it folds against the first, target_folds(poses[0], poses[k]) (none for
+/// k = 0).
+std::vector<std::vector<Eigen::Index>> pose_folds(const std::vector<Mesh3>& poses);
+
+/// near_folds of every pose's folds together, on the first pose; empty when no pose folds any triangle.
+std::vector<unsigned char> near_pose_folds(const std::vector<Mesh3>& poses,
+                                           const std::vector<std::vector<Eigen::Index>>& folds);
+
 /// Per element, whether it is one of `folds` or shares a vertex with one: the elements whose vertices a fold's own
 /// term pulls directly (frame_metrics3.hpp counts inversions there apart).
 std::vector<unsigned char> near_folds(const Mesh3& mesh, const std::vector<Eigen::Index>& folds);

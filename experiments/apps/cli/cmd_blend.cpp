@@ -87,9 +87,8 @@ std::vector<std::string> frame_labels(const std::vector<BlendFrame>& frames) {
 /// Per pose, the triangles it folds within the surface against the first (target_folds3.hpp; none for the first),
 /// with a note on standard error for each pose that folds any.
 std::vector<std::vector<Eigen::Index>> pose_folds(const io::Poses3& read, const std::vector<std::string>& names) {
-  std::vector<std::vector<Eigen::Index>> folds(read.poses.size());
+  const std::vector<std::vector<Eigen::Index>> folds = global3::pose_folds(read.poses);
   for (std::size_t k = 1; k < read.poses.size(); ++k) {
-    folds[k] = global3::target_folds(read.poses[0], read.poses[k]);
     if (!folds[k].empty())
       std::cerr << "note: " << names[k] << " folds " << folds[k].size() << " of " << read.poses[0].element_count()
                 << " triangles within the surface against the first pose (metrics.json: pose_folds); frames may "
@@ -105,14 +104,13 @@ void write_blend(const BlendOptions& o, const global3::Blend3& blend, const io::
                  nlohmann::json document) {
   const global3::Mesh3& rest = read.poses[0];
   const std::vector<std::vector<Eigen::Index>> folds = pose_folds(read, names);
-  std::vector<Eigen::Index> all_folds;
-  for (const auto& pose : folds) all_folds.insert(all_folds.end(), pose.begin(), pose.end());
   std::vector<Eigen::VectorXd> weights;
   for (const BlendFrame& frame : frames) weights.push_back(frame.weights);
   const std::vector<Eigen::Matrix3Xd> solved = blend.vertices_at(weights);
   StagedOutput staged(o.out);
   Frames3Output output(staged.staging(), rest, frames.size(), o.format, read.reoriented);
-  if (!all_folds.empty()) output.count_near_folds(global3::near_folds(rest, all_folds));
+  if (std::vector<unsigned char> near = global3::near_pose_folds(read.poses, folds); !near.empty())
+    output.count_near_folds(std::move(near));
   const bool quality = o.metrics == "all";
   nlohmann::json entries = nlohmann::json::array();
   for (std::size_t k = 0; k < frames.size(); ++k) {
