@@ -1,5 +1,6 @@
 // The 3D engine's record (engine3_speed.hpp) read from a file shaped like bench_3d's output, written to claims.json
-// and read back unchanged, and rendered into the report's 3D table; a file whose benchmarks did not run gives none.
+// and read back unchanged, and rendered into the report's 3D table with the cost of an as-rigid-as-possible step;
+// a file whose benchmarks did not run gives none.
 #include "experiments/measurements/engine3_speed.hpp"
 #include "reports/generator/report.hpp"
 
@@ -27,8 +28,10 @@ fs::path bench_file(bool ran) {
   nlohmann::json doc = {{"context", {{"date", "2026-03-01T10:00:00+00:00"}, {"host_name", "test"}}},
                         {"benchmarks", nlohmann::json::array()}};
   if (ran)
-    for (const char* name : {"3d/setup", "3d/frame-1-thread", "3d/frame-parts", "3d/blend3", "3d/stand-in"})
-      for (double ns : {1e7, 1.2e7, 1.1e7}) doc["benchmarks"].push_back(repetition(name, ns));
+    for (const char* name :
+         {"3d/setup", "3d/frame-1-thread", "3d/frame-parts", "3d/blend3", "3d/arap-step", "3d/stand-in"})
+      for (double ns : {1e7, 1.2e7, 1.1e7})
+        doc["benchmarks"].push_back(repetition(name, std::string(name) == "3d/arap-step" ? 5 * ns : ns));
   const fs::path file = fs::temp_directory_path() / (ran ? "engine3_speed_test.json" : "engine3_speed_empty.json");
   std::ofstream(file) << doc.dump();
   return file;
@@ -37,7 +40,8 @@ fs::path bench_file(bool ran) {
 TEST(Engine3Speed, ReadsMediansSpreadAndPartsAndReadsBackAsWritten) {
   const auto speed = engine3_speed(bench_file(true));
   ASSERT_TRUE(speed.has_value());
-  ASSERT_EQ(speed->rows.size(), 4u);  // set-up, one thread, blend, stand-in: the two-thread frame did not run
+  // set-up, one thread, blend, an as-rigid-as-possible step, stand-in: the two-thread frame did not run
+  ASSERT_EQ(speed->rows.size(), 5u);
   EXPECT_EQ(speed->rows[0].benchmark, "3d/setup");
   EXPECT_DOUBLE_EQ(speed->rows[0].median_ms, 11);
   EXPECT_DOUBLE_EQ(speed->rows[0].range_ms.lo, 10);
@@ -58,6 +62,8 @@ TEST(Engine3Speed, ReadsMediansSpreadAndPartsAndReadsBackAsWritten) {
   EXPECT_NE(md.find("| `3d/setup` |"), std::string::npos) << md;
   EXPECT_NE(md.find("| ≤ 200 ms | yes |"), std::string::npos) << md;
   EXPECT_NE(md.find("solve 5.00 ms"), std::string::npos) << md;
+  EXPECT_NE(md.find("E^R and E^S stay in the plane"), std::string::npos) << md;
+  EXPECT_NE(md.find("one step costing 55.0 ms against 11.0 ms for a frame (5.0×"), std::string::npos) << md;
 }
 
 TEST(Engine3Speed, NoneWithoutTheFileOrItsBenchmarks) {

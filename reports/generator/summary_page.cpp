@@ -10,7 +10,9 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <sstream>
+#include <string_view>
 #include <vector>
 
 namespace affinterp::report {
@@ -104,6 +106,26 @@ void write_engine_area(std::ostringstream& md, const std::optional<measurements:
   md << "\n\n";
 }
 
+/// Why E^R and E^S stay in the plane, and what their 3D counterpart costs: an as-rigid-as-possible step against a
+/// frame, both on one thread, when the run has both rows.
+void write_arap_note(std::ostringstream& md, const measurements::Engine3Speed& speed) {
+  const auto median = [&](std::string_view benchmark) -> std::optional<double> {
+    for (const auto& row : speed.rows)
+      if (row.benchmark == benchmark) return row.median_ms;
+    return std::nullopt;
+  };
+  const auto step = median("3d/arap-step"), frame = median("3d/frame-1-thread");
+  md << "\nE^R and E^S stay in the plane: their closed form minimises over similarities written as complex numbers, "
+        "and 3D similarities form no field, so the minimum over rotations (a Procrustes problem) is not a quadratic "
+        "form in the vertices and no one-solve-per-frame counterpart exists (theory/global3/interpolation3.hpp). "
+        "The nearest sound counterpart is offered instead: `arap_iterations` as-rigid-as-possible steps on each "
+        "E^F frame (E^R with its scale held at 1; theory/global3/arap_refinement3.hpp)";
+  if (step && frame)
+    md << ", one step costing " << fixed(*step, 1) << " ms against " << fixed(*frame, 1) << " ms for a frame ("
+       << fixed(*step / *frame, 1) << "×; a 3 × 3 SVD an element dominates)";
+  md << ".\n";
+}
+
 /// The 3D engine's speed (bench_3d): each benchmark's median and the spread of its repetitions, the target and its
 /// verdict where the row has one, and a frame's parts.
 void write_engine3_speed(std::ostringstream& md, const std::optional<measurements::Engine3Speed>& speed) {
@@ -125,6 +147,7 @@ void write_engine3_speed(std::ostringstream& md, const std::optional<measurement
     md << "\nA frame's parts (one thread, medians): local maps with the symmetric exponential "
        << fixed(speed->parts->local_maps_ms, 2) << " ms, right-hand side " << fixed(speed->parts->right_hand_side_ms, 2)
        << " ms, solve " << fixed(speed->parts->solve_ms, 2) << " ms.\n";
+  write_arap_note(md, *speed);
   md << "\n";
 }
 
