@@ -253,7 +253,8 @@ void bind_interpolation(py::module_& m) {
       .def("frames", &Interpolation::frames, py::arg("times"),
            "v(t) at each of `times` as a (k, n, 2) array (frame k is vertices_at(times[k])).")
       .def("energy_at", &Interpolation::energy_at, py::arg("t"),
-           "E_t (E'(t) when symmetric) at its minimiser v(t), as metrics.json's \"energy\".")
+           "E_t (E'(t) when symmetric) at its minimiser v(t), as metrics.json's \"energy\"; in 3D with "
+           "arap_iterations, the as-rigid-as-possible energy those steps lower, at the refined frame.")
       .def("metrics_at", &Interpolation::metrics_at, py::arg("t"),
            "The frame at t's entry of `affinterp interpolate`'s metrics.json as a dict: t, energy and the quality "
            "numbers (2D: flipped_triangles, min_det, max_det, max_distortion, mean_distortion, area_ratio; 3D: "
