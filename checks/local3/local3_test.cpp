@@ -147,6 +147,25 @@ TEST(NearestRotation, MaximisesTheTraceAgainstEveryOtherRotation) {
   }
 }
 
+// The closed form for rank 2 (a triangle's in-plane products X Zᵀ, X and Z 3 × 2) is the SVD's answer, and it maps
+// the plane of Z onto the plane of X keeping the orientations X and Z give them (tr(Rᵀ X Zᵀ) = σ1 + σ2 needs the
+// 2 × 2 map between the planes to be a rotation); below rank 2 it is the SVD's answer itself.
+TEST(NearestRotation, OfRankTwoIsTheSvdsAnswer) {
+  std::mt19937 rng(12);
+  std::normal_distribution<double> g;
+  for (int trial = 0; trial < 400; ++trial) {
+    Eigen::Matrix<double, 3, 2> X, Z;
+    for (int k = 0; k < 6; ++k) X(k) = g(rng), Z(k) = g(rng);
+    const M Mat = X * Z.transpose();
+    const M R = nearest_rotation_of_rank_two<double>(Mat);
+    EXPECT_LT((R - nearest_rotation<double>(Mat)).norm(), 1e-11) << "trial " << trial;
+    const V n_x = X.col(0).cross(X.col(1)).normalized(), n_z = Z.col(0).cross(Z.col(1)).normalized();
+    EXPECT_NEAR((R * n_z).dot(n_x), 1, 1e-11) << "trial " << trial;
+  }
+  const M rank_one = V(1, 2, 3) * V(-1, 0.5, 2).transpose();
+  EXPECT_EQ(nearest_rotation_of_rank_two<double>(rank_one), nearest_rotation<double>(rank_one));
+}
+
 /// The four homotopies of A built from its principal logarithms, and from ω shifted by `turns` turns.
 template <class Check>
 void for_each_homotopy(const M& A, int turns, Check check) {

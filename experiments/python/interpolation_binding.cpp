@@ -215,7 +215,7 @@ With E^S, E^R or a blend and no pins, loci or edge directions, one edge fixes ro
 CLI. With (n, 3) vertices and (m, 3) triangles or (m, 4) tetrahedra the 3D engine runs (E^F; homotopy,
 rotation_branch, area_weighted, symmetric, pins, loci 'V[@C]:x,y,z;...', barycentre_locus 'linear[@C]', 'none' or
 'x,y,z;...[@C]', time_range, and arap_iterations: as-rigid-as-possible steps on each frame, E^R with its scale
-held at 1, each costing several frames), frames are (n, 3),
+held at 1, each a solve and a rotation fitted to each element), frames are (n, 3),
 and the 2D-only keywords raise ValueError. Bad input (shapes, NaN, degenerate or flipped triangles, unknown
 names, ...) raises ValueError with the CLI's one-line message.)";
   return doc;

@@ -122,7 +122,7 @@ void write_arap_note(std::ostringstream& md, const measurements::Engine3Speed& s
         "E^F frame (E^R with its scale held at 1; theory/global3/arap_refinement3.hpp)";
   if (step && frame)
     md << ", one step costing " << fixed(*step, 1) << " ms against " << fixed(*frame, 1) << " ms for a frame ("
-       << fixed(*step / *frame, 1) << "×; a 3 × 3 SVD an element dominates)";
+       << fixed(*step / *frame, 1) << "×: a solve and a rotation fitted to each element)";
   md << ".\n";
 }
 

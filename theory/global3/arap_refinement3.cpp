@@ -17,9 +17,12 @@ void require_arap_iterations(int iterations) {
 std::vector<Eigen::Matrix3d> rotated_maps(const PoissonSystem3& system, std::span<const Eigen::Matrix3d> A,
                                           const Eigen::Matrix3Xd& v, std::size_t threads) {
   std::vector<Eigen::Matrix3d> RA = system.gradients(v, threads);
+  const bool in_plane = system.corners() == 3;  // B_s A_sᵀ of rank 2: no SVD needed
   global::for_each_range(RA.size(), threads, [&](std::size_t first, std::size_t last) {
-    for (std::size_t s = first; s < last; ++s)
-      RA[s] = local3::nearest_rotation<double>(RA[s] * A[s].transpose()) * A[s];
+    for (std::size_t s = first; s < last; ++s) {
+      const Eigen::Matrix3d M = RA[s] * A[s].transpose();
+      RA[s] = (in_plane ? local3::nearest_rotation_of_rank_two<double>(M) : local3::nearest_rotation<double>(M)) * A[s];
+    }
   });
   return RA;
 }

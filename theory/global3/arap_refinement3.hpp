@@ -10,10 +10,10 @@
 // Local/global iteration (Sorkine and Alexa 2007, with the blended stretches as targets as in Kaji et al.'s
 // N-way blender): with P_s = E_s E_s⁺ the term is ‖B_s − R_s A_s P_s‖² for B_s = X_s E_s⁺ (B_s P_s = B_s), whose
 // only R_s-dependent part is −2 tr(R_sᵀ B_s A_sᵀ): the local step takes R_s = the rotation nearest to B_s A_sᵀ
-// (local3/nearest_rotation3.hpp), the global step E^F's solve against R_s A_s with the factor already there. Each
-// step minimises E^ARAP over its own variables with the others fixed, so E^ARAP never increases. Started from the
-// E^F frame (R_s = I). One iteration costs a frame's right-hand side and solve plus one 3 × 3 SVD a term, which
-// dominates: several frames' time (bench_3d's 3d/arap-step measures it).
+// (local3/nearest_rotation3.hpp: in closed form for a triangle, whose B_s A_sᵀ has rank 2; by an SVD for a
+// tetrahedron), the global step E^F's solve against R_s A_s with the factor already there. Each step minimises
+// E^ARAP over its own variables with the others fixed, so E^ARAP never increases. Started from the E^F frame
+// (R_s = I). One iteration costs a frame's right-hand side and solve plus the rotations (bench_3d's 3d/arap-step).
 #include "theory/global3/constraints3.hpp"
 #include "theory/global3/poisson_system3.hpp"
 

@@ -13,7 +13,7 @@
 // energy is no longer a quadratic form: no one-solve-per-frame counterpart exists. E^S minimises over the same
 // similarities and fails the same way. The nearest sound 3D counterpart is offered: `arap_iterations` local/global
 // (as-rigid-as-possible) steps on each frame, E^R with its scale held at 1, with this factor (arap_refinement3.hpp;
-// each costs several frames).
+// each costs a solve and a rotation fitted to each element).
 //
 // The symmetrised E′(t) = E(t) + E^{−1}(1 − t) (Kaji's "Improvements", the 2D engine's `symmetric`) carries over
 // for E^F: the reverse problem fits the target's elements to their reverse homotopies Ā_i(1 − t) between I and

@@ -223,6 +223,7 @@ double PoissonSystem3::energy(std::span<const Matrix3d> A, const Eigen::Matrix3X
 }
 
 Index PoissonSystem3::vertex_count() const { return data_->n; }
+int PoissonSystem3::corners() const { return static_cast<int>(data_->elements.rows()); }
 const Eigen::VectorXd& PoissonSystem3::weights() const { return data_->weights; }
 const Constraints3& PoissonSystem3::constraints() const { return data_->constraints; }
 global::SparseBackEnd PoissonSystem3::back_end() const { return data_->factor->back_end(); }

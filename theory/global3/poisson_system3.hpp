@@ -66,6 +66,7 @@ class PoissonSystem3 {
   double energy(std::span<const Eigen::Matrix3d> A, const Eigen::Matrix3Xd& v, const ConstraintTargets3& targets) const;
 
   Eigen::Index vertex_count() const;
+  int corners() const;  ///< 3 (triangles) or 4 (tetrahedra)
   /// w_i: the rest element's area or volume (area_weighted), else 1; one per term.
   const Eigen::VectorXd& weights() const;
   const Constraints3& constraints() const;

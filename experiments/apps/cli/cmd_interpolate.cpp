@@ -385,7 +385,7 @@ void add_engine_options(CLI::App& cmd, InterpolateOptions& o) {
       ->default_str(engine.symmetric ? "true" : "false");
   cmd.add_option("--arap-iterations", o.request.arap_iterations,
                  "3D: as-rigid-as-possible steps on each E^F frame (each element may turn its A_i(t): E^R with the "
-                 "scale held at 1; each step costs several frames); 2D has --energy R itself")
+                 "scale held at 1; each step a solve and a rotation fitted to each element); 2D has --energy R itself")
       ->capture_default_str();
 }
 
