@@ -112,12 +112,33 @@ Mesh3 read_surface3(const std::filesystem::path& file) {
   return mesh;
 }
 
-std::string medit_file_text(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw MeshFileError(file.string() + ": cannot be read");
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
+/// The extension of `file`, lower case.
+std::string lowercase_extension(const std::filesystem::path& file) {
+  std::string extension = file.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
+/// The next whitespace-separated token of `text` from `at`, skipping `#` comments to the end of their line.
+std::string_view next_token(std::string_view text, std::size_t& at) {
+  while (at < text.size()) {
+    if (text[at] == '#')
+      while (at < text.size() && text[at] != '\n') ++at;
+    else if (std::isspace(static_cast<unsigned char>(text[at])))
+      ++at;
+    else
+      break;
+  }
+  const std::size_t first = at;
+  while (at < text.size() && !std::isspace(static_cast<unsigned char>(text[at])) && text[at] != '#') ++at;
+  return text.substr(first, at - first);
+}
+
+/// Whether `token` is a number equal to 0.
+bool is_zero(std::string_view token) {
+  double value = 1;
+  const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+  return error == std::errc() && end == token.data() + token.size() && value == 0;
 }
 
 }  // namespace
@@ -149,12 +170,38 @@ Mesh3 parse_medit(std::string_view text, const std::string& name) {
   return mesh;
 }
 
+bool surely_flat(std::string_view text, bool off) {
+  std::size_t at = 0;
+  if (!off) {
+    for (std::size_t line = 0; line < text.size(); line = at + 1) {
+      at = std::min(text.find('\n', line), text.size());
+      const std::string_view record = text.substr(line, at - line);
+      std::size_t in = 0;
+      if (next_token(record, in) != "v") continue;
+      next_token(record, in), next_token(record, in);
+      const std::string_view z = next_token(record, in);
+      if (!z.empty() && !is_zero(z)) return false;
+    }
+    return true;
+  }
+  if (next_token(text, at) != "OFF") return false;
+  long long vertices = 0;
+  const std::string_view count = next_token(text, at);
+  const auto [end, error] = std::from_chars(count.data(), count.data() + count.size(), vertices);
+  if (error != std::errc() || end != count.data() + count.size() || vertices < 0) return false;
+  next_token(text, at), next_token(text, at);  // the faces' and the edges' counts
+  for (long long k = 0; k < vertices; ++k) {
+    next_token(text, at), next_token(text, at);
+    if (!is_zero(next_token(text, at))) return false;
+  }
+  return true;
+}
+
 Mesh3 read_mesh3(const std::filesystem::path& file) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(file, error)) throw MeshFileError(file.string() + ": no such file");
-  std::string extension = file.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension == ".mesh") return parse_medit(medit_file_text(file), file.string());
+  const std::string extension = lowercase_extension(file);
+  if (extension == ".mesh") return parse_medit(file_text(file), file.string());
   if (extension == ".obj" || extension == ".off" || extension == ".ply" || extension == ".stl")
     return read_surface3(file);
   throw MeshFileError(file.string() + ": unknown 3D mesh format '" + extension +
@@ -162,8 +209,11 @@ Mesh3 read_mesh3(const std::filesystem::path& file) {
 }
 
 std::optional<Mesh3> read_if_3d(const std::filesystem::path& file) {
-  if (file.extension() == ".mesh") return read_mesh3(file);
+  const std::string extension = lowercase_extension(file);
+  if (extension == ".mesh") return read_mesh3(file);
   try {
+    if ((extension == ".obj" || extension == ".off") && surely_flat(file_text(file), extension == ".off"))
+      return std::nullopt;  // the 2D reader's, without a full read here first
     Mesh3 mesh = read_mesh3(file);
     if ((mesh.vertices.row(2).array() != 0).any()) return mesh;
   } catch (const MeshFileError&) {

@@ -25,8 +25,14 @@ global3::Mesh3 parse_medit(std::string_view text, const std::string& name);
 
 /// The mesh in `file` when it holds a 3D shape (a .mesh file, or a surface with some z ≠ 0), read once for the 3D
 /// engine; nullopt otherwise. A file the 3D reader cannot read counts as 2D, so that the 2D reader reports what is
-/// wrong with it.
+/// wrong with it. An OBJ or OFF file is first looked at with surely_flat, so that a flat one is not parsed twice.
 std::optional<global3::Mesh3> read_if_3d(const std::filesystem::path& file);
+
+/// Whether OBJ (`off` false) or OFF text is surely flat: every vertex's z is a number equal to 0 (or, in OBJ, absent),
+/// read from its vertex records alone (OBJ's `v` lines; OFF's coordinates after its `OFF` header and counts, `#`
+/// comments skipped), a cheap look before a full 3D read. Text it cannot follow is not surely flat: the full read
+/// decides.
+bool surely_flat(std::string_view text, bool off);
 
 /// `mesh` with `vertices` as OBJ (triangles) or MEDIT (tetrahedra) text, full double precision.
 std::string mesh3_text(const global3::Mesh3& mesh);

@@ -128,7 +128,8 @@ global::Mesh assemble(std::vector<double>& coordinates, std::vector<int>& corner
   return mesh;
 }
 
-/// The whole of `file`; MeshFileError when it is missing or cannot be read.
+}  // namespace
+
 std::string file_text(const fs::path& file) {
   const std::string name = file.string();
   std::error_code error;
@@ -139,6 +140,8 @@ std::string file_text(const fs::path& file) {
   if (in.bad()) throw MeshFileError(name + ": cannot be read");
   return text;
 }
+
+namespace {
 
 /// What an OFF file is read as.
 enum class OffSurface {

@@ -32,6 +32,9 @@ struct MeshFileError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The whole of `file`; MeshFileError when it is missing or cannot be read.
+std::string file_text(const std::filesystem::path& file);
+
 /// Parses OBJ text; `name` prefixes error messages.
 global::Mesh parse_obj(std::string_view text, const std::string& name);
 /// Parses OFF text; `name` prefixes error messages.
