@@ -1,7 +1,7 @@
 """The Python module's 3D side: Interpolation on (n, 3) vertices with tetrahedra or triangles (the 3D engine,
 theory/global3) and Blend over K poses, on small generated meshes (a tetrahedralised bar, a tube surface): the
-ends are the source and the target, a blend at e_k is pose k, the same frames and metrics as the CLI writes, and bad
-input raises a one-line ValueError. Run by ctest (label unit) as test_affinterp.py is."""
+ends are the source and the target, a blend at e_k is pose k, the same frames and metrics as the CLI writes, a blend
+of poses in the plane is the 2D engine's E^F interpolation, and bad input raises a one-line ValueError. Run by ctest (label unit) as test_affinterp.py is."""
 import itertools
 import json
 import os
@@ -191,6 +191,31 @@ def test_blend_at_a_vertex_of_the_simplex_is_that_pose(mesh):
     np.testing.assert_array_equal(single, blend.vertices_at([[0.2, 0.5, 0.3]])[0])
 
 
+def test_blend_in_the_plane_is_the_2d_engines_ef_interpolation(tmp_path):
+    """Poses given as (n, 2) arrays blend in the plane: two poses at (1 - t, t) are the 2D engine's E^F exp-log
+    frames (the worm curled by 3 pi, so through full turns), the frames stay (n, 2), unit weights give the poses, and
+    `affinterp blend` on the same OBJ files writes the same vertices with z = 0."""
+    subprocess.run([CLI, "shapes", "worm-curl", "--out", str(tmp_path / "pair")], check=True, capture_output=True)
+    source, target = str(tmp_path / "pair" / "source.obj"), str(tmp_path / "pair" / "target.obj")
+    V0, F = affinterp.read_mesh(source)
+    V1, _ = affinterp.read_mesh(target)
+    size = np.ptp(V1, axis=0).max()
+    blend = affinterp.Blend([V0, V1], F)
+    interpolation = affinterp.Interpolation(V0, V1, F, energy="F")
+    for t in (0.25, 0.5, 0.75):
+        np.testing.assert_allclose(blend.vertices_at([1 - t, t]), interpolation.vertices_at(t), rtol=0, atol=1e-12 * size)
+    turned = V1 @ np.array([[0.5, np.sqrt(3) / 2], [-np.sqrt(3) / 2, 0.5]])
+    frames = affinterp.Blend([V0, V1, turned], F).vertices_at(np.eye(3))
+    assert frames.shape == (3, len(V0), 2)
+    for frame, pose in zip(frames, (V0, V1, turned)):
+        np.testing.assert_allclose(frame, pose, rtol=0, atol=1e-9 * size)
+    subprocess.run([CLI, "blend", "--poses", source, target, "--weights", "0.3,0.7", "--format", "npy", "--out",
+                    str(tmp_path / "run")], check=True, capture_output=True)
+    written = np.load(tmp_path / "run" / "frames.npy")
+    np.testing.assert_array_equal(written[0, :, 2], 0)
+    np.testing.assert_array_equal(written[0, :, :2], blend.vertices_at([0.3, 0.7]))
+
+
 def test_bad_input_raises_one_line_value_errors():
     V, T = bar()
     W = twisted(V, 1.0)
@@ -220,5 +245,6 @@ def test_bad_input_raises_one_line_value_errors():
     one_line_value_error(lambda: blend.vertices_at([-1, 2, 0]), "non-negative")
     one_line_value_error(lambda: affinterp.Blend([V], T), "two poses")
     one_line_value_error(lambda: affinterp.Blend([V, W[:, :2]], T), "poses[1]", "(n, 3)")
+    one_line_value_error(lambda: affinterp.Blend([V[:, :2], W], T[:, :3]), "poses[1]", "(n, 2)")
     extrapolated = affinterp.Blend([V, W], T, allow_extrapolation=True).vertices_at([-0.5, 1.5])
     assert extrapolated.shape == (len(V), 3)

@@ -38,14 +38,34 @@ global3::Interpolation3Options options3(const SpaceKeywords& k, Eigen::Index ver
   return options;
 }
 
-/// (frames.size(), n, 3) holding `frames`.
-py::array_t<double> stacked(const std::vector<Eigen::Matrix3Xd>& frames, Eigen::Index vertex_count) {
+/// (frames.size(), n, d) holding the first d = 2 or 3 coordinates of `frames`.
+py::array_t<double> stacked(const std::vector<Eigen::Matrix3Xd>& frames, Eigen::Index vertex_count, Eigen::Index d) {
   py::array_t<double> out(
-      {static_cast<py::ssize_t>(frames.size()), static_cast<py::ssize_t>(vertex_count), py::ssize_t{3}});
+      {static_cast<py::ssize_t>(frames.size()), static_cast<py::ssize_t>(vertex_count), static_cast<py::ssize_t>(d)});
   for (std::size_t k = 0; k < frames.size(); ++k)
-    Eigen::Map<Eigen::Matrix3Xd>(out.mutable_data() + 3 * vertex_count * static_cast<Eigen::Index>(k), 3,
-                                 vertex_count) = frames[k];
+    Eigen::Map<Eigen::MatrixXd>(out.mutable_data() + d * vertex_count * static_cast<Eigen::Index>(k), d, vertex_count) =
+        frames[k].topRows(d);
   return out;
+}
+
+/// Poses given as (n, 2) arrays lie in the plane z = 0 (all of them, or none): the 3D engine keeps such a blend
+/// flat, and on two poses at (1 − t, t) gives the 2D engine's E^F exp-log frames (checks/python/test_3d.py).
+std::vector<Eigen::Matrix3Xd> pose_points(const py::iterable& poses, std::vector<std::string>& names, bool& planar) {
+  std::vector<py::object> given;
+  for (const py::handle pose : poses) given.push_back(py::reinterpret_borrow<py::object>(pose));
+  planar = !given.empty() && !is_space_points(given.front());
+  std::vector<Eigen::Matrix3Xd> points;
+  for (const py::object& pose : given) {
+    names.push_back("poses[" + std::to_string(points.size()) + "]");
+    if (!planar) {
+      points.push_back(points3(pose, names.back()));
+      continue;
+    }
+    const Eigen::Matrix2Xd xy = python::points(pose, names.back());
+    points.emplace_back(Eigen::Matrix3Xd::Zero(3, xy.cols()));
+    points.back().topRows<2>() = xy;
+  }
+  return points;
 }
 
 /// affinterp.Blend: Blend3 over K poses sharing F.
@@ -53,13 +73,11 @@ class SpaceBlend {
  public:
   SpaceBlend(const py::iterable& poses, const py::object& F, bool allow_extrapolation,
              const std::string& rotation_branch, bool area_weighted, int arap_iterations) {
-    const Eigen::MatrixXi elements3 = elements(F, "F");
-    std::vector<global3::Mesh3> meshes;
     std::vector<std::string> names;
-    for (const py::handle pose : poses) {
-      names.push_back("poses[" + std::to_string(meshes.size()) + "]");
-      meshes.push_back({points3(py::reinterpret_borrow<py::object>(pose), names.back()), elements3});
-    }
+    std::vector<Eigen::Matrix3Xd> points = pose_points(poses, names, planar_);
+    const Eigen::MatrixXi elements3 = elements(F, "F", !planar_);
+    std::vector<global3::Mesh3> meshes;
+    for (Eigen::Matrix3Xd& pose : points) meshes.push_back({std::move(pose), elements3});
     if (meshes.size() < 2) value_error("poses: a blend needs at least two poses, got " + std::to_string(meshes.size()));
     check_meshes3(meshes, names);
     global3::Blend3Options options;
@@ -71,7 +89,7 @@ class SpaceBlend {
     poses_ = std::move(meshes);
   }
 
-  /// w of shape (K,): the (n, 3) blend; (frames, K): (frames, n, 3).
+  /// w of shape (K,): the (n, 3) blend ((n, 2) for poses in the plane); (frames, K): (frames, n, 3) or (frames, n, 2).
   py::array_t<double> vertices_at(const py::object& w) const {
     const DoubleArray weights = DoubleArray::ensure(w);
     if (!weights || weights.ndim() < 1 || weights.ndim() > 2) value_error("w: expected shape (k,) or (frames, k)");
@@ -85,7 +103,8 @@ class SpaceBlend {
       py::gil_scoped_release unlocked;
       frames = translated([&] { return engine_->vertices_at(vectors); });
     }
-    if (weights.ndim() == 2) return stacked(frames, vertex_count_);
+    if (weights.ndim() == 2) return stacked(frames, vertex_count_, planar_ ? 2 : 3);
+    if (planar_) return to_points(Eigen::Matrix2Xd(frames[0].topRows<2>()));
     return to_points(std::move(frames[0]));
   }
 
@@ -114,6 +133,7 @@ class SpaceBlend {
  private:
   std::unique_ptr<global3::Blend3> engine_;
   std::vector<global3::Mesh3> poses_;              ///< for the metrics
+  bool planar_ = false;                            ///< poses given as (n, 2): frames returned as (n, 2)
   mutable std::vector<unsigned char> near_folds_;  ///< as SpaceInterpolation's, over every pose's folds
   mutable std::once_flag folds_found_;
   Eigen::Index vertex_count_ = 0;
@@ -161,7 +181,7 @@ py::array_t<double> SpaceInterpolation::frames(const py::object& times) const {
     py::gil_scoped_release unlocked;
     frames = translated([&] { return engine_->vertices_at(ts); });
   }
-  return stacked(frames, vertex_count_);
+  return stacked(frames, vertex_count_, 3);
 }
 
 double SpaceInterpolation::energy_at(double t) const {
@@ -199,13 +219,15 @@ py::tuple SpaceInterpolation::rotation_split() const {
 }
 
 void bind_blend(py::module_& m) {
-  py::class_<SpaceBlend>(m, "Blend", R"(N-way blend of K >= 2 compatible 3D poses (Kaji et al.'s Lie-algebra
+  py::class_<SpaceBlend>(m, "Blend",
+                         R"(N-way blend of K >= 2 compatible poses, in space or in the plane (Kaji et al.'s Lie-algebra
 parametrisation): each element's map exp(sum_k w_k log R_k) exp(sum_k w_k log S_k) from poses[0] (on the
 consistent branch each log R_k split into its smoothed carrier and remainder, exp(sum_k w_k carrier_k)
 exp(sum_k w_k remainder_k)), then the vertices minimising E^F against these maps, one factorisation for all weight
 vectors.
 
-  poses                a sequence of K (n, 3) float arrays
+  poses                a sequence of K (n, 3) float arrays, or K (n, 2) ones for poses in the plane (frames (n, 2);
+                       two poses at weights (1 - t, t) give Interpolation's energy='F' frames)
   F                    (m, 3) triangles or (m, 4) tetrahedra (0-based), shared by the poses
   allow_extrapolation  accept weights off the simplex (a negative entry, or a sum other than 1)
   rotation_branch      'consistent' (logarithms consistent over neighbours) or 'principal'

@@ -1,7 +1,8 @@
-// `affinterp blend`: N-way blends of K >= 2 compatible 3D poses (global3::Blend3: each element's rotation and
-// stretch logarithms blended with the weights w, then E^F's solve, one factorisation for all weight vectors), or
-// frames through key poses at given times (global3::Keyframes3). Writes the frames as `interpolate` does for 3D
-// meshes, and metrics.json (per frame: the weights, t for keys, volume or area ratios, distortion, inverted elements).
+// `affinterp blend`: N-way blends of K >= 2 compatible poses, in space or in the plane z = 0 (global3::Blend3, which
+// keeps a flat blend flat: each element's rotation and stretch logarithms blended with the weights w, then E^F's
+// solve, one factorisation for all weight vectors), or frames through key poses at given times
+// (global3::Keyframes3). Writes the frames as `interpolate` does for 3D meshes, and metrics.json (per frame: the
+// weights, t for keys, volume or area ratios, distortion, inverted elements).
 #include "experiments/apps/cli/command.hpp"
 #include "experiments/apps/cli/enum_option.hpp"
 #include "experiments/apps/cli/frames3_output.hpp"
@@ -198,7 +199,8 @@ void run_keys(const BlendOptions& o) {
 }
 
 constexpr const char* blend_description =
-    "Blend K >= 2 compatible 3D poses (surfaces .obj/.off/.ply/.stl or MEDIT .mesh tetrahedra): with --poses A B C "
+    "Blend K >= 2 compatible poses (surfaces .obj/.off/.ply/.stl or MEDIT .mesh tetrahedra; 2D meshes, z = 0, blend "
+    "in the plane, two of them at weights 1-t,t giving interpolate's --energy F frames): with --poses A B C "
     "--weights 0.2,0.5,0.3 one frame per --weights vector, each element's map exp(sum_k w_k log R_k) "
     "exp(sum_k w_k log S_k) from the first pose (with --rotation-branch consistent, the default, each log R_k turned "
     "along its smoothed carrier, then its remainder), then the E^F solve (weights off the simplex only with "
