@@ -1,7 +1,8 @@
 """The Python module's 3D side: Interpolation on (n, 3) vertices with tetrahedra or triangles (the 3D engine,
 theory/global3) and Blend over K poses, on small generated meshes (a tetrahedralised bar, a tube surface): the
 ends are the source and the target, a blend at e_k is pose k, the same frames and metrics as the CLI writes, a blend
-of poses in the plane is the 2D engine's E^F interpolation, and bad input raises a one-line ValueError. Run by ctest (label unit) as test_affinterp.py is."""
+of poses in the plane is the 2D engine's E^F interpolation, keyframes pass through their poses, and bad input raises
+a one-line ValueError. Run by ctest (label unit) as test_affinterp.py is."""
 import itertools
 import json
 import os
@@ -214,6 +215,31 @@ def test_blend_in_the_plane_is_the_2d_engines_ef_interpolation(tmp_path):
     written = np.load(tmp_path / "run" / "frames.npy")
     np.testing.assert_array_equal(written[0, :, 2], 0)
     np.testing.assert_array_equal(written[0, :, :2], blend.vertices_at([0.3, 0.7]))
+
+
+@pytest.mark.parametrize("mesh", [bar, tube])
+def test_keyframes_pass_through_their_poses_and_blend_neighbours_between(mesh):
+    """Keyframes at times 0, 0.5, 1: each key time gives its pose, a time between two keys the blend of those two
+    poses, a sequence of times the frames stacked; in the plane too."""
+    V, F = mesh()
+    poses = [V, twisted(V, 1.0), twisted(V, 2.0)]
+    keys = affinterp.Keyframes(poses, F, [0, 0.5, 1])
+    for t, pose in zip((0, 0.5, 1), poses):
+        np.testing.assert_allclose(keys.vertices_at(t), pose, atol=1e-9)
+    np.testing.assert_array_equal(keys.weights_at(0.75), [0, 0.5, 0.5])
+    np.testing.assert_allclose(keys.vertices_at(0.75), affinterp.Blend(poses, F).vertices_at([0, 0.5, 0.5]),
+                               rtol=0, atol=1e-12)
+    assert keys.vertices_at([0, 0.3, 1]).shape == (3, len(V), 3)
+    if mesh is tube:  # and a grid of unit squares in the plane, stretched along x, then sheared
+        G = np.array([[i, j] for j in range(3) for i in range(4)], dtype=float)
+        squares = [(j * 4 + i, j * 4 + i + 1, j * 4 + i + 5, j * 4 + i + 4) for j in range(2) for i in range(3)]
+        T = np.array([t for a, b, c, d in squares for t in ((a, b, c), (a, c, d))])
+        flat = affinterp.Keyframes([G, G * [2, 1], G @ [[1, 0], [0.5, 1]]], T, [0, 1, 2])
+        assert flat.vertices_at([0.5, 1.5]).shape == (2, len(G), 2)
+        np.testing.assert_allclose(flat.vertices_at(1), G * [2, 1], atol=1e-12)
+    one_line_value_error(lambda: keys.vertices_at(1.5), "outside the key times")
+    one_line_value_error(lambda: affinterp.Keyframes(poses, F, [0, 1, 1]), "increase")
+    one_line_value_error(lambda: affinterp.Keyframes(poses[:1], F, [0]), "two poses")
 
 
 def test_bad_input_raises_one_line_value_errors():

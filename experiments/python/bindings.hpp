@@ -11,5 +11,6 @@ void bind_decide(pybind11::module_& m);
 void bind_pair(pybind11::module_& m);
 void bind_mesh(pybind11::module_& m);
 void bind_blend(pybind11::module_& m);
+void bind_keyframes(pybind11::module_& m);
 
 }  // namespace affinterp::python

@@ -25,4 +25,5 @@ Bad input raises ValueError with a one-line message.)";
   affinterp::python::bind_pair(m);
   affinterp::python::bind_mesh(m);
   affinterp::python::bind_blend(m);
+  affinterp::python::bind_keyframes(m);
 }

@@ -38,52 +38,14 @@ global3::Interpolation3Options options3(const SpaceKeywords& k, Eigen::Index ver
   return options;
 }
 
-/// (frames.size(), n, d) holding the first d = 2 or 3 coordinates of `frames`.
-py::array_t<double> stacked(const std::vector<Eigen::Matrix3Xd>& frames, Eigen::Index vertex_count, Eigen::Index d) {
-  py::array_t<double> out(
-      {static_cast<py::ssize_t>(frames.size()), static_cast<py::ssize_t>(vertex_count), static_cast<py::ssize_t>(d)});
-  for (std::size_t k = 0; k < frames.size(); ++k)
-    Eigen::Map<Eigen::MatrixXd>(out.mutable_data() + d * vertex_count * static_cast<Eigen::Index>(k), d, vertex_count) =
-        frames[k].topRows(d);
-  return out;
-}
-
-/// Poses given as (n, 2) arrays lie in the plane z = 0 (all of them, or none): the 3D engine keeps such a blend
-/// flat, and on two poses at (1 − t, t) gives the 2D engine's E^F exp-log frames (checks/python/test_3d.py).
-std::vector<Eigen::Matrix3Xd> pose_points(const py::iterable& poses, std::vector<std::string>& names, bool& planar) {
-  std::vector<py::object> given;
-  for (const py::handle pose : poses) given.push_back(py::reinterpret_borrow<py::object>(pose));
-  planar = !given.empty() && !is_space_points(given.front());
-  std::vector<Eigen::Matrix3Xd> points;
-  for (const py::object& pose : given) {
-    names.push_back("poses[" + std::to_string(points.size()) + "]");
-    if (!planar) {
-      points.push_back(points3(pose, names.back()));
-      continue;
-    }
-    const Eigen::Matrix2Xd xy = python::points(pose, names.back());
-    points.emplace_back(Eigen::Matrix3Xd::Zero(3, xy.cols()));
-    points.back().topRows<2>() = xy;
-  }
-  return points;
-}
-
 /// affinterp.Blend: Blend3 over K poses sharing F.
 class SpaceBlend {
  public:
   SpaceBlend(const py::iterable& poses, const py::object& F, bool allow_extrapolation,
              const std::string& rotation_branch, bool area_weighted, int arap_iterations) {
-    std::vector<std::string> names;
-    std::vector<Eigen::Matrix3Xd> points = pose_points(poses, names, planar_);
-    const Eigen::MatrixXi elements3 = elements(F, "F", !planar_);
-    std::vector<global3::Mesh3> meshes;
-    for (Eigen::Matrix3Xd& pose : points) meshes.push_back({std::move(pose), elements3});
-    if (meshes.size() < 2) value_error("poses: a blend needs at least two poses, got " + std::to_string(meshes.size()));
-    check_meshes3(meshes, names);
-    global3::Blend3Options options;
-    options.allow_extrapolation = allow_extrapolation, options.area_weighted = area_weighted;
-    options.arap_iterations = arap_iterations;
-    options.rotation_branch = global::parse_option<global::RotationBranch>(rotation_branch);
+    std::vector<global3::Mesh3> meshes = pose_meshes(poses, F, planar_);
+    global3::Blend3Options options = blend_options(rotation_branch, area_weighted, arap_iterations);
+    options.allow_extrapolation = allow_extrapolation;
     engine_ = translated([&] { return std::make_unique<global3::Blend3>(meshes, options); });
     vertex_count_ = meshes[0].vertex_count();
     poses_ = std::move(meshes);
@@ -104,8 +66,7 @@ class SpaceBlend {
       frames = translated([&] { return engine_->vertices_at(vectors); });
     }
     if (weights.ndim() == 2) return stacked(frames, vertex_count_, planar_ ? 2 : 3);
-    if (planar_) return to_points(Eigen::Matrix2Xd(frames[0].topRows<2>()));
-    return to_points(std::move(frames[0]));
+    return frame_points(std::move(frames[0]), planar_);
   }
 
   /// `affinterp blend`'s metrics.json entry of the blend for w, shape (K,), as a dict.
@@ -144,6 +105,51 @@ class SpaceBlend {
 bool is_space_points(const py::object& V0) {
   const py::array a = py::array::ensure(V0);
   return a && a.ndim() == 2 && a.shape(1) == 3;
+}
+
+py::array_t<double> stacked(const std::vector<Eigen::Matrix3Xd>& frames, Eigen::Index vertex_count, Eigen::Index d) {
+  py::array_t<double> out(
+      {static_cast<py::ssize_t>(frames.size()), static_cast<py::ssize_t>(vertex_count), static_cast<py::ssize_t>(d)});
+  for (std::size_t k = 0; k < frames.size(); ++k)
+    Eigen::Map<Eigen::MatrixXd>(out.mutable_data() + d * vertex_count * static_cast<Eigen::Index>(k), d, vertex_count) =
+        frames[k].topRows(d);
+  return out;
+}
+
+std::vector<global3::Mesh3> pose_meshes(const py::iterable& poses, const py::object& F, bool& planar) {
+  std::vector<py::object> given;
+  for (const py::handle pose : poses) given.push_back(py::reinterpret_borrow<py::object>(pose));
+  planar = !given.empty() && !is_space_points(given.front());
+  std::vector<Eigen::Matrix3Xd> points;
+  std::vector<std::string> names;
+  for (const py::object& pose : given) {
+    names.push_back("poses[" + std::to_string(points.size()) + "]");
+    if (!planar) {
+      points.push_back(points3(pose, names.back()));
+      continue;
+    }
+    const Eigen::Matrix2Xd xy = python::points(pose, names.back());
+    points.emplace_back(Eigen::Matrix3Xd::Zero(3, xy.cols()));
+    points.back().topRows<2>() = xy;
+  }
+  const Eigen::MatrixXi elements3 = elements(F, "F", !planar);
+  std::vector<global3::Mesh3> meshes;
+  for (Eigen::Matrix3Xd& pose : points) meshes.push_back({std::move(pose), elements3});
+  if (meshes.size() < 2) value_error("poses: at least two poses are needed, got " + std::to_string(meshes.size()));
+  check_meshes3(meshes, names);
+  return meshes;
+}
+
+global3::Blend3Options blend_options(const std::string& rotation_branch, bool area_weighted, int arap_iterations) {
+  global3::Blend3Options options;
+  options.rotation_branch = global::parse_option<global::RotationBranch>(rotation_branch);
+  options.area_weighted = area_weighted, options.arap_iterations = arap_iterations;
+  return options;
+}
+
+py::array_t<double> frame_points(Eigen::Matrix3Xd&& v, bool planar) {
+  if (planar) return to_points(Eigen::Matrix2Xd(v.topRows<2>()));
+  return to_points(std::move(v));
 }
 
 SpaceInterpolation::SpaceInterpolation(const py::object& V0, const py::object& V1, const py::object& F,

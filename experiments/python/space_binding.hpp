@@ -3,6 +3,7 @@
 // tetrahedra runs global3::Interpolation3 (interpolation_binding.cpp hands it over), and affinterp.Blend blends K
 // poses (global3::Blend3). Inputs are checked as the CLI checks them (experiments/inputs/mesh3_poses.hpp).
 #include "experiments/python/arrays.hpp"
+#include "theory/global3/blend3.hpp"
 #include "theory/global3/interpolation3.hpp"
 
 #include <memory>
@@ -25,6 +26,18 @@ struct SpaceKeywords {
 
 /// Whether V0 is an array of points in space, (n, 3).
 bool is_space_points(const py::object& V0);
+
+/// The poses of a blend or of keyframes, with their elements F, as meshes in space checked as the CLI checks them
+/// (at least two; a one-line ValueError naming "poses[k]" otherwise). Poses given as (n, 2) arrays (all of them, or
+/// none) lie in the plane z = 0 and set `planar`: the 3D engine keeps such a blend flat, and on two poses at
+/// (1 − t, t) gives the 2D engine's E^F exp-log frames (checks/python/test_3d.py).
+std::vector<global3::Mesh3> pose_meshes(const py::iterable& poses, const py::object& F, bool& planar);
+/// A blend's options from the Python keywords they share with keyframes.
+global3::Blend3Options blend_options(const std::string& rotation_branch, bool area_weighted, int arap_iterations);
+/// (frames.size(), n, d) holding the first d = 2 or 3 coordinates of `frames`.
+py::array_t<double> stacked(const std::vector<Eigen::Matrix3Xd>& frames, Eigen::Index vertex_count, Eigen::Index d);
+/// The frame as (n, 2) points when `planar`, else (n, 3).
+py::array_t<double> frame_points(Eigen::Matrix3Xd&& v, bool planar);
 
 class SpaceInterpolation {
  public:
