@@ -2,10 +2,10 @@
 // The 3D engine's speed, from one run of build/bin/bench_3d (theory/global3 on the cat of Sumner and Popović 2004
 // subdivided once, or CGAL's elephant subdivided twice): the set-up, a frame on one and two threads, a blend of three
 // poses, an as-rigid-as-possible step and the deformation stand-in, each with the spread of its repetitions, and a
-// frame's parts. Measurements,
-// not claims. Three rows carry a target of the 3D engine's specification on 2 cores (set-up ≤ 0.2 s, a frame and a
-// blend of three poses each ≥ 200 a second on two threads, i.e. ≤ 5 ms), decided on the spread of the repetitions
-// as the scale targets are (scale_targets.hpp): met when every repetition meets it, missed when none does.
+// frame's parts. Measurements, not claims. Three rows carry a target of the 3D engine's specification on 2 cores
+// (set-up ≤ 0.2 s, a frame and a blend of three poses each ≥ 200 a second on two threads, i.e. ≤ 5 ms), decided on
+// the spread of the repetitions as the scale targets are (scale_targets.hpp): met when every repetition meets it,
+// missed when none does.
 #include "experiments/measurements/bench_run.hpp"
 
 #include <nlohmann/json.hpp>

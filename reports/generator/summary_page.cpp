@@ -186,8 +186,8 @@ void write_engine3_quality(std::ostringstream& md, const std::optional<measureme
         "the surface (its normal opposes the source's carried by the rotation fitted to the triangle's vertex "
         "one-ring): each element map makes such a fold a half-turn about an axis in the surface, which the triangles "
         "sharing its vertices cannot follow rigidly, so frames may invert at or beside it; \"away\" counts, in the "
-        "frame with the most, the inverted elements that are neither a "
-        "fold nor share a vertex with one. The as-rigid-as-possible row lets every element turn its exp-log map on "
+        "frame with the most, the inverted elements that are neither a fold nor share a vertex with one. The "
+        "as-rigid-as-possible row lets every element turn its exp-log map on "
         "each frame (E^R's 3D counterpart with the scale held at 1: theory/global3/arap_refinement3.hpp) and is "
         "still counted against the unturned A_i(t). The cat poses are Sumner and Popović's (SIGGRAPH 2004). "
         "Measurements, not claims.\n\n| method |";

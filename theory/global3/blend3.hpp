@@ -46,7 +46,7 @@ struct Blend3Options {
 class Blend3 {
  public:
   /// Rest = poses[0]. Throws global::RefusedProblem for fewer than two poses, invalid or incompatible meshes
-  /// (global::InvalidMesh), bad constraints.
+  /// (global::InvalidMesh), bad constraints, an arap_iterations outside 0 … max_arap_iterations.
   explicit Blend3(const std::vector<Mesh3>& poses, Blend3Options options = {});
   /// A separate rest mesh; the maps A_{k,i} go from it to each pose.
   Blend3(const Mesh3& rest, const std::vector<Mesh3>& poses, Blend3Options options = {});

@@ -66,7 +66,8 @@ struct Interpolation3Options {
 class Interpolation3 {
  public:
   /// Throws global::RefusedProblem (global::InvalidMesh for the meshes: mesh3_validation.hpp) for meshes that
-  /// are not a valid pair, bad constraints, an ill-posed system or a negative arap_iterations.
+  /// are not a valid pair, bad constraints, an ill-posed system or an arap_iterations outside
+  /// 0 … max_arap_iterations (arap_refinement3.hpp).
   Interpolation3(const Mesh3& source, const Mesh3& target, Interpolation3Options options = {});
   ~Interpolation3();
   Interpolation3(Interpolation3&&) noexcept;
