@@ -1,8 +1,10 @@
 // The 3D viewer in a real browser: `affinterp interpolate` on a tetrahedral bar and `affinterp blend` on a tube
 // write OUT/viewer.html (three.js inlined); headless Chromium opens them from disk and this checks that the page
 // draws the mesh (a WebGL canvas that is not blank), that scrubbing the slider with the keyboard changes the
-// frame and the drawing, that the colouring by inverted elements counts none on these runs (metrics.json's
-// inverted_elements is 0 in every frame), that nothing is fetched and that the console stays free of errors.
+// frame and the drawing, that the colouring by inverted elements shows in every frame the elements metrics.json
+// counts (none on a tube turned by 3 rad, whose far faces face away from their rest normals; two on a bar twisted
+// by 4.5 rad on principal branches), that a run without quality metrics offers no such colouring, that nothing is
+// fetched and that the console stays free of errors.
 // Exits 77 (CTest: skipped) when Chromium is missing; the set-up installs it and libjs-three.
 #include "checks/apps/chromium_session.hpp"
 #include "checks/apps/cli_harness.hpp"
@@ -10,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <csignal>
+#include <fstream>
 #include <iostream>
 
 namespace {
@@ -63,6 +66,17 @@ class Viewer3InBrowser : public ::testing::Test {
     result = run_cli("blend --poses " + mesh("tube", 0, "tube.off") + " " + mesh("tube", 1, "tube1.off") +
                      " --weights 1,0 --weights 0.5,0.5 --weights 0,1 --out " + (scratch() / "tube").string());
     ASSERT_EQ(result.status, 0) << result.error;
+    result = run_cli("interpolate --source " + (scratch() / "tube.off").string() + " --target " +
+                     mesh("tube", 3, "tube3.off") + " --frames 5 --out " + (scratch() / "tube3").string());
+    ASSERT_EQ(result.status, 0) << result.error;
+    result = run_cli("interpolate --source " + (scratch() / "bar.mesh").string() + " --target " +
+                     mesh("bar", 4.5, "bar4.5.mesh") + " --frames 5 --rotation-branch principal --out " +
+                     (scratch() / "bar4.5").string());
+    ASSERT_EQ(result.status, 0) << result.error;
+    result = run_cli("interpolate --source " + (scratch() / "tube.off").string() + " --target " +
+                     (scratch() / "tube3.off").string() + " --frames 3 --metrics none --out " +
+                     (scratch() / "unmeasured").string());
+    ASSERT_EQ(result.status, 0) << result.error;
   }
 
   void SetUp() override { browser_.emplace(*chromium, scratch() / ("profile-" + std::to_string(++tabs_))); }
@@ -99,16 +113,32 @@ TEST_F(Viewer3InBrowser, TetrahedraAreDrawnAndScrubbed) { scrub(scratch() / "bar
 
 TEST_F(Viewer3InBrowser, ABlendIsDrawnAndScrubbed) { scrub(scratch() / "tube" / "viewer.html", 2); }
 
-TEST_F(Viewer3InBrowser, InvertedColouringCountsNoneWhereMetricsCountNone) {
-  browser_->open(url(scratch() / "bar" / "viewer.html"));
-  browser_->evaluate(
+/// Per frame of `run`'s viewer coloured by inverted elements, the count its legend gives, against metrics.json's.
+void expect_legend_counts_as_metrics(ChromiumSession& browser, const fs::path& run) {
+  const nlohmann::json metrics = nlohmann::json::parse(std::ifstream(run / "metrics.json"));
+  browser.open(url(run / "viewer.html"));
+  browser.evaluate(
       "const c = document.getElementById('colour'); c.value = 'inverted'; "
       "c.dispatchEvent(new Event('change'))");
-  for (int k = 0; k < 5; ++k) {
-    EXPECT_EQ(browser_->evaluate("document.getElementById('legend').textContent.split(' ')[0]"), "0") << "frame " << k;
-    browser_->evaluate("document.getElementById('frame').focus()");
-    browser_->press("ArrowRight", 39);
+  for (const auto& frame : metrics["frames"]) {
+    const std::string legend = browser.evaluate("document.getElementById('legend').textContent");
+    EXPECT_EQ(legend.substr(0, legend.find(' ')), std::to_string(frame["inverted_elements"].get<int>()))
+        << run << " frame " << frame["index"] << ": " << legend;
+    browser.evaluate("document.getElementById('frame').focus()");
+    browser.press("ArrowRight", 39);
   }
+}
+
+TEST_F(Viewer3InBrowser, InvertedColouringShowsWhatMetricsCount) {
+  expect_legend_counts_as_metrics(*browser_, scratch() / "bar");
+  expect_legend_counts_as_metrics(*browser_, scratch() / "tube3");
+  expect_legend_counts_as_metrics(*browser_, scratch() / "bar4.5");
+}
+
+TEST_F(Viewer3InBrowser, NoInvertedColouringWithoutQualityMetrics) {
+  browser_->open(url(scratch() / "unmeasured" / "viewer.html"));
+  EXPECT_EQ(browser_->evaluate("document.querySelectorAll('#colour option[value=\"inverted\"]').length"), 0);
+  EXPECT_EQ(browser_->evaluate("document.getElementById('colour').options.length"), 2);
 }
 
 }  // namespace

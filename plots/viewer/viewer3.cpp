@@ -70,21 +70,26 @@ fs::path three_js_folder() {
 }
 
 void write_viewer3(const fs::path& html, const std::string& title, const global3::Mesh3& rest,
-                   const std::vector<Viewer3Frame>& frames) {
+                   const std::vector<Viewer3Frame>& frames, std::span<const unsigned char> near_folds) {
   const std::string three = text_of(three_js_folder() / "build" / "three.min.js");
   const std::string orbit = text_of(three_js_folder() / "examples" / "js" / "controls" / "OrbitControls.js");
   const auto [faces, face_elements] = drawn_faces(rest);
-  nlohmann::json data = {
-      {"title", title},
-      {"corners", rest.corners()},
-      {"faces", faces},
-      {"faceElements", face_elements},
-      {"elements", std::vector<int>(rest.elements.data(), rest.elements.data() + rest.elements.size())},
-      {"rest", coordinates(rest.vertices)},
-      {"frames", nlohmann::json::array()},
-      {"labels", nlohmann::json::array()}};
-  for (const Viewer3Frame& frame : frames)
+  nlohmann::json data = {{"title", title},
+                         {"faces", faces},
+                         {"faceElements", face_elements},
+                         {"elementCount", rest.element_count()},
+                         {"rest", coordinates(rest.vertices)},
+                         {"frames", nlohmann::json::array()},
+                         {"labels", nlohmann::json::array()},
+                         {"nearFolds", nlohmann::json::array()},
+                         {"inverted", nlohmann::json::array()}};
+  for (const Viewer3Frame& frame : frames) {
     data["frames"].push_back(coordinates(frame.vertices)), data["labels"].push_back(frame.label);
+    if (frame.inverted) data["inverted"].push_back(*frame.inverted);
+  }
+  if (data["inverted"].size() < frames.size()) data["inverted"] = nullptr;
+  for (std::size_t i = 0; i < near_folds.size(); ++i)
+    if (near_folds[i]) data["nearFolds"].push_back(i);
   std::string json = data.dump();
   // inside a <script> element "</" would end it
   for (std::size_t at = 0; (at = json.find("</", at)) != std::string::npos; at += 3) json.replace(at, 2, "<\\/");

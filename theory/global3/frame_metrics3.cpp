@@ -53,14 +53,17 @@ FrameMetrics3 frame_metrics3(const Mesh3& source, const Eigen::Matrix3Xd& frame,
     const Eigen::Matrix3d A =
         local_maps.empty() ? Eigen::Matrix3d::Identity() : local_maps[static_cast<std::size_t>(i)];
     const ElementQuality q = element_quality(source, framed, i, A);
-    metrics.inverted_elements += q.ratio <= 0;
-    metrics.inverted_near_folds += q.ratio <= 0 && !near.empty() && near[static_cast<std::size_t>(i)];
+    if (q.ratio <= 0) {
+      metrics.inverted.push_back(i);
+      metrics.inverted_near_folds += !near.empty() && near[static_cast<std::size_t>(i)];
+    }
     metrics.min_ratio = std::min(metrics.min_ratio, q.ratio);
     metrics.max_ratio = std::max(metrics.max_ratio, q.ratio);
     metrics.max_distortion = std::max(metrics.max_distortion, q.distortion);
     metrics.mean_distortion += q.distortion / static_cast<double>(source.element_count());
     measure += q.measure;
   }
+  metrics.inverted_elements = static_cast<Eigen::Index>(metrics.inverted.size());
   metrics.measure_ratio = measure / element_measures(source).sum();
   return metrics;
 }

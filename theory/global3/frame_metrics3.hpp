@@ -13,11 +13,13 @@
 #include <Eigen/Core>
 
 #include <span>
+#include <vector>
 
 namespace affinterp::global3 {
 
 struct FrameMetrics3 {
   Eigen::Index inverted_elements = 0;  ///< elements with a signed measure ratio ≤ 0
+  std::vector<Eigen::Index> inverted;  ///< which: the inverted_elements elements, increasing
   /// Of those, the ones the `near` mask marks (target_folds3.hpp: at or beside a triangle the target folds).
   Eigen::Index inverted_near_folds = 0;
   double min_ratio = 0;  ///< min_i of the signed area or volume ratio

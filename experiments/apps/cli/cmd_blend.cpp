@@ -122,7 +122,7 @@ void write_blend(const BlendOptions& o, const global3::Blend3& blend, const io::
     entries.push_back(std::move(entry));
   }
   output.close();
-  if (o.figures) write_viewer3_or_note(staged.staging(), blend_title(o), rest, solved, frame_labels(frames));
+  if (o.figures) write_viewer3_or_note(staged.staging(), blend_title(o), rest, solved, frame_labels(frames), output);
   document["vertices"] = rest.vertex_count(), document["elements"] = rest.element_count();
   document["element_kind"] = rest.corners() == 4 ? "tetrahedra" : "triangles";
   document["pose_folds"] = folds;

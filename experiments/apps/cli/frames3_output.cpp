@@ -42,8 +42,9 @@ nlohmann::json Frames3Output::record(int k, const Eigen::Matrix3Xd& vertices,
     io::write_mesh3(frame_, staging_ / entry["file"].get<std::string>());
   }
   if (quality) {
-    const global3::FrameMetrics3 metrics = global3::frame_metrics3(reference_, vertices, local_maps, near_folds_);
+    global3::FrameMetrics3 metrics = global3::frame_metrics3(reference_, vertices, local_maps, near_folds_);
     entry.update(io::metrics3_json(metrics, !near_folds_.empty()));
+    inverted_.push_back(std::move(metrics.inverted));
   }
   return entry;
 }
@@ -68,11 +69,14 @@ std::string inverted_summary(const nlohmann::json& frames, const std::string& wh
 }
 
 void write_viewer3_or_note(const fs::path& folder, const std::string& title, const global3::Mesh3& rest,
-                           const std::vector<Eigen::Matrix3Xd>& frames, const std::vector<std::string>& labels) {
+                           const std::vector<Eigen::Matrix3Xd>& frames, const std::vector<std::string>& labels,
+                           const Frames3Output& measured) {
+  const bool inverted = measured.inverted().size() == frames.size();
   std::vector<plots::Viewer3Frame> shown;
-  for (std::size_t k = 0; k < frames.size(); ++k) shown.push_back({labels[k], frames[k]});
+  for (std::size_t k = 0; k < frames.size(); ++k)
+    shown.push_back({labels[k], frames[k], inverted ? std::optional(measured.inverted()[k]) : std::nullopt});
   try {
-    plots::write_viewer3(folder / "viewer.html", title, rest, shown);
+    plots::write_viewer3(folder / "viewer.html", title, rest, shown, measured.near_folds());
   } catch (const std::runtime_error& e) {
     std::cerr << "note: no viewer.html: " << e.what() << "\n";
   }

@@ -45,13 +45,10 @@ nlohmann::json options3_json(const Interpolate3Run& run) {
   return options;
 }
 
-/// Each frame's file and metrics.json entry: t, the energy the frame minimises (E^F with the constraints; E^ARAP
-/// after --arap-iterations), the quality metrics.
+/// Each frame's file and metrics.json entry, through `output`: t, the energy the frame minimises (E^F with the
+/// constraints; E^ARAP after --arap-iterations), the quality metrics.
 nlohmann::json write_frames(const Interpolate3Run& run, const global3::Interpolation3& interpolation,
-                            const global3::Mesh3& source, bool reoriented, const std::vector<Eigen::Matrix3Xd>& frames,
-                            const std::vector<Eigen::Index>& folds, const fs::path& staging) {
-  Frames3Output output(staging, source, run.times.size(), run.format, reoriented);
-  if (!folds.empty()) output.count_near_folds(global3::near_folds(source, folds));
+                            const std::vector<Eigen::Matrix3Xd>& frames, Frames3Output& output) {
   const bool energy = run.metrics == "all" || run.metrics == "energy";
   const bool quality = run.metrics == "all" || run.metrics == "quality";
   nlohmann::json entries = nlohmann::json::array();
@@ -67,9 +64,9 @@ nlohmann::json write_frames(const Interpolate3Run& run, const global3::Interpola
   return entries;
 }
 
-/// OUT/viewer.html: the frames on a time slider.
+/// OUT/viewer.html: the frames on a time slider, with the inverted elements `measured` recorded.
 void write_viewer(const Interpolate3Run& run, const global3::Mesh3& source, const std::vector<Eigen::Matrix3Xd>& frames,
-                  const fs::path& staging) {
+                  const Frames3Output& measured, const fs::path& staging) {
   std::vector<std::string> labels;
   for (const double t : run.times) {
     std::ostringstream label;
@@ -79,7 +76,7 @@ void write_viewer(const Interpolate3Run& run, const global3::Mesh3& source, cons
   const std::string title = fs::path(run.source).filename().string() + " -> " +
                             fs::path(run.target).filename().string() + " (" +
                             global::to_string(run.request.options.homotopy) + ", E^F)";
-  write_viewer3_or_note(staging, title, source, frames, labels);
+  write_viewer3_or_note(staging, title, source, frames, labels, measured);
 }
 
 }  // namespace
@@ -117,9 +114,10 @@ void run_interpolate3(const Interpolate3Run& run) {
               << " triangles within the surface (metrics.json: target_folds); frames may invert at or beside them\n";
   StagedOutput staged(run.out);
   const std::vector<Eigen::Matrix3Xd> solved = interpolation->vertices_at(run.times);
-  const nlohmann::json frames =
-      write_frames(run, *interpolation, source, pair.reoriented, solved, folds, staged.staging());
-  if (run.figures) write_viewer(run, source, solved, staged.staging());
+  Frames3Output output(staged.staging(), source, run.times.size(), run.format, pair.reoriented);
+  if (!folds.empty()) output.count_near_folds(global3::near_folds(source, folds));
+  const nlohmann::json frames = write_frames(run, *interpolation, solved, output);
+  if (run.figures) write_viewer(run, source, solved, output, staged.staging());
   const nlohmann::json document = {{"source", run.source},
                                    {"target", run.target},
                                    {"dimension", 3},
