@@ -39,6 +39,7 @@ TEST(Engine3Quality, LinearBlendFoldsATurnedTubeWhereExpLogDoesNot) {
   EXPECT_GT(exp_log.middle_distortion, 1);
   // a free twist: nothing for the elements' own turns to undo, so the refined frames invert none either
   EXPECT_EQ(quality.cells[row(quality, "exp-log, 5 as-rigid-as-possible steps")][0].most_inverted, 0);
+  EXPECT_FALSE(quality.closeup) << "exp-log inverts nothing to show up close";
 
   const nlohmann::json written = quality;
   EXPECT_EQ(nlohmann::json(written.get<Engine3Quality>()), written);
@@ -48,6 +49,7 @@ TEST(Engine3Quality, LinearBlendFoldsATurnedTubeWhereExpLogDoesNot) {
   EXPECT_NE(md.find("### 3D frames against baselines"), std::string::npos) << md;
   EXPECT_NE(md.find("| E^F, exp-log | 0, "), std::string::npos) << md;
   EXPECT_NE(md.find("| target's folds (the input) | 0 | 0 |"), std::string::npos) << md;
+  EXPECT_EQ(md.find("Up close"), std::string::npos) << md;
 }
 
 }  // namespace

@@ -68,22 +68,34 @@ std::vector<Method> methods() {
   return all;
 }
 
+/// The method E^F exp-log with Interpolation3's defaults, whose frames the close-up shows.
+constexpr std::string_view exp_log_method = "E^F, exp-log";
+
+/// A method's frames on one pair: its cell, and the frame with the most inverted elements away from the target's
+/// folds (then the most inverted; the first such).
+struct Measured {
+  Engine3QualityCell cell;
+  std::size_t worst = 0;
+  long worst_away = 0;
+};
+
 /// The frames' cell, against the reference's local maps at each frame's time (`reference[f]`), with `near` the
 /// elements at or beside the target's folds.
-Engine3QualityCell measured(const PosePair& pair, const std::vector<Eigen::Matrix3Xd>& frames,
-                            const std::vector<double>& times,
-                            const std::vector<std::vector<Eigen::Matrix3d>>& reference,
-                            const std::vector<unsigned char>& near) {
-  Engine3QualityCell cell;
+Measured measured(const PosePair& pair, const std::vector<Eigen::Matrix3Xd>& frames, const std::vector<double>& times,
+                  const std::vector<std::vector<Eigen::Matrix3d>>& reference, const std::vector<unsigned char>& near) {
+  Measured m;
+  Engine3QualityCell& cell = m.cell;
+  long worst_inverted = 0;
   for (std::size_t f = 0; f < frames.size(); ++f) {
     const global3::FrameMetrics3 metrics = global3::frame_metrics3(pair.source, frames[f], reference[f], near);
-    if (metrics.inverted_elements > cell.most_inverted)
-      cell.most_inverted = metrics.inverted_elements, cell.at_t = times[f];
-    cell.most_inverted_away =
-        std::max(cell.most_inverted_away, metrics.inverted_elements - metrics.inverted_near_folds);
+    const long inverted = metrics.inverted_elements, away = inverted - metrics.inverted_near_folds;
+    if (inverted > cell.most_inverted) cell.most_inverted = inverted, cell.at_t = times[f];
+    cell.most_inverted_away = std::max(cell.most_inverted_away, away);
+    if (std::pair(away, inverted) > std::pair(m.worst_away, worst_inverted))
+      m.worst = f, m.worst_away = away, worst_inverted = inverted;
     if (f == frames.size() / 2) cell.middle_distortion = metrics.mean_distortion;
   }
-  return cell;
+  return m;
 }
 
 }  // namespace
@@ -109,8 +121,17 @@ Engine3Quality engine3_quality(const std::vector<PosePair>& pairs, int frames,
     const Interpolation3 exp_log(pair.source, pair.target);
     std::vector<std::vector<Eigen::Matrix3d>> reference;
     for (const double t : times) reference.push_back(exp_log.local_maps_at(t));
-    for (std::size_t m = 0; m < all.size(); ++m)
-      quality.cells[m].push_back(measured(pair, all[m].frames(pair, times), times, reference, near));
+    for (std::size_t m = 0; m < all.size(); ++m) {
+      const std::vector<Eigen::Matrix3Xd> frames_of_method = all[m].frames(pair, times);
+      const Measured cell = measured(pair, frames_of_method, times, reference, near);
+      quality.cells[m].push_back(cell.cell);
+      if (all[m].name != exp_log_method || cell.cell.most_inverted == 0) continue;
+      const bool worse = !quality.closeup || std::pair(cell.worst_away, cell.cell.most_inverted) >
+                                                 std::pair(quality.closeup->inverted_away, quality.closeup->inverted);
+      if (worse)
+        quality.closeup = closeup_of_frame(pair.name, pair.source, pair.target, times[cell.worst],
+                                           frames_of_method[cell.worst], reference[cell.worst]);
+    }
   }
   return quality;
 }
@@ -128,9 +149,14 @@ std::optional<Engine3Quality> read_engine3_quality(const std::filesystem::path& 
 }
 
 void to_json(nlohmann::json& json, const Engine3Quality& quality) {
-  json = {{"frames", quality.frames},     {"pairs", quality.pairs},
-          {"elements", quality.elements}, {"target_folds", quality.target_folds},
-          {"methods", quality.methods},   {"cells", nlohmann::json::array()}};
+  json = {{"frames", quality.frames},
+          {"pairs", quality.pairs},
+          {"elements", quality.elements},
+          {"target_folds", quality.target_folds},
+          {"methods", quality.methods},
+          {"cells", nlohmann::json::array()},
+          {"closeup", quality.closeup ? nlohmann::json(*quality.closeup) : nlohmann::json()},
+          {"figures", quality.figures}};
   for (const auto& row : quality.cells) {
     nlohmann::json cells = nlohmann::json::array();
     for (const Engine3QualityCell& c : row)
@@ -149,6 +175,9 @@ void from_json(const nlohmann::json& json, Engine3Quality& quality) {
   // A record written before the target's folds were counted has neither them nor the count away from them.
   quality.target_folds = json.value("target_folds", std::vector<long>{});
   quality.methods = json.at("methods").get<std::vector<std::string>>();
+  quality.closeup.reset();
+  if (json.contains("closeup") && !json["closeup"].is_null()) quality.closeup = json["closeup"].get<Engine3Closeup>();
+  quality.figures = json.value("figures", std::vector<std::string>{});
   quality.cells.clear();
   for (const auto& row : json.at("cells")) {
     quality.cells.emplace_back();

@@ -12,6 +12,7 @@
 // A_i(t) on consistent branches (frame_metrics3.hpp: a triangle whose normal opposes A_i(t) n_p). Distortion: the
 // mean over elements of σ1/σ2 of each element's in-plane map (σ1/σ3 for tetrahedra) in the frame nearest t = 1/2
 // (at the ends every method gives the poses themselves, whose distortion is the target's).
+#include "experiments/measurements/engine3_closeup.hpp"
 #include "theory/global3/mesh3.hpp"
 
 #include <nlohmann/json.hpp>
@@ -47,6 +48,10 @@ struct Engine3Quality {
   std::vector<long> target_folds;    ///< each pair's triangles the target folds (the input's); empty in older records
   std::vector<std::string> methods;  ///< each method's name, e.g. "E^F, exp-log, symmetrised"
   std::vector<std::vector<Engine3QualityCell>> cells;  ///< cells[method][pair]
+  /// E^F exp-log's frame (Interpolation3's defaults) with the most inverted triangles away from its target's folds
+  /// (then the most inverted), over every pair, up close; none when no such frame inverts a triangle.
+  std::optional<Engine3Closeup> closeup;
+  std::vector<std::string> figures;  ///< the close-up drawn (draw_engine3_closeup), when the report draws figures
 };
 
 /// Every method on every pair at `frames` frames; `progress` is told each pair's name as it starts.
@@ -57,7 +62,7 @@ Engine3Quality engine3_quality(const std::vector<PosePair>& pairs, int frames,
 std::optional<Engine3Quality> read_engine3_quality(const std::filesystem::path& file);
 
 /// claims.json's "engine3_quality": {"frames", "pairs", "elements", "target_folds", "methods", "cells":
-/// [[{"most_inverted", "most_inverted_away", "at_t", "middle_distortion"}]]}.
+/// [[{"most_inverted", "most_inverted_away", "at_t", "middle_distortion"}]], "closeup" (or null), "figures"}.
 void to_json(nlohmann::json& json, const Engine3Quality& quality);
 void from_json(const nlohmann::json& json, Engine3Quality& quality);
 

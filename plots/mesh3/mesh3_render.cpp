@@ -48,8 +48,23 @@ void ProjectedBox::include(const Eigen::Matrix3Xd& vertices) {
   hi = hi.cwiseMax(seen.topRows<2>().rowwise().maxCoeff());
 }
 
+Eigen::Vector3d face_colour(FaceMark mark, double tint) {
+  switch (mark) {
+    case FaceMark::fold:
+      return {0.6, 0.3, 0.85};
+    case FaceMark::inverted_near_fold:
+      return {0.95, 0.55, 0.1};
+    case FaceMark::inverted:
+      return {0.85, 0.1, 0.1};
+    case FaceMark::none:
+      break;
+  }
+  return {0.75 - 0.55 * tint, 0.85 - 0.45 * tint, 1.0 - 0.2 * tint};
+}
+
 void draw_mesh3(cairo_t* cr, const Eigen::Matrix3Xi& triangles, const Eigen::Matrix3Xd& vertices,
-                const ProjectedBox& box, double x, double y, double size, double tint) {
+                const ProjectedBox& box, double x, double y, double size, double tint,
+                std::span<const FaceMark> marks) {
   const Eigen::Matrix3Xd seen = view_rotation() * vertices;  // x right, y up, z towards the viewer
   const Eigen::Vector2d extent = box.hi - box.lo;
   const double scale = 0.92 * size / std::max(extent.maxCoeff(), 1e-300);
@@ -63,7 +78,12 @@ void draw_mesh3(cairo_t* cr, const Eigen::Matrix3Xi& triangles, const Eigen::Mat
   const auto depth = [&](Eigen::Index i) {
     return seen(2, triangles(0, i)) + seen(2, triangles(1, i)) + seen(2, triangles(2, i));
   };
-  std::stable_sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) { return depth(a) < depth(b); });
+  const auto marked = [&](Eigen::Index i) {
+    return !marks.empty() && marks[static_cast<std::size_t>(i)] != FaceMark::none;
+  };
+  std::stable_sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) {
+    return std::pair(marked(a), depth(a)) < std::pair(marked(b), depth(b));
+  });
   const Eigen::Vector3d light = Eigen::Vector3d(-0.3, 0.5, 1).normalized();
   cairo_set_line_width(cr, 0.25);
   for (const Eigen::Index i : order) {
@@ -76,8 +96,17 @@ void draw_mesh3(cairo_t* cr, const Eigen::Matrix3Xi& triangles, const Eigen::Mat
     cairo_line_to(cr, page(triangles(1, i)).x(), page(triangles(1, i)).y());
     cairo_line_to(cr, page(triangles(2, i)).x(), page(triangles(2, i)).y());
     cairo_close_path(cr);
-    cairo_set_source_rgb(cr, shade * (0.75 - 0.55 * tint), shade * (0.85 - 0.45 * tint), shade * (1.0 - 0.2 * tint));
+    const Eigen::Vector3d colour =
+        face_colour(marks.empty() ? FaceMark::none : marks[static_cast<std::size_t>(i)], tint);
+    cairo_set_source_rgb(cr, shade * colour.x(), shade * colour.y(), shade * colour.z());
     cairo_fill_preserve(cr);
+    if (marked(i)) {  // outlined in its own colour, wide enough to show a triangle seen edge-on
+      cairo_set_source_rgb(cr, colour.x(), colour.y(), colour.z());
+      cairo_set_line_width(cr, 2);
+      cairo_stroke(cr);
+      cairo_set_line_width(cr, 0.25);
+      continue;
+    }
     cairo_set_source_rgba(cr, 0.1, 0.1, 0.2, 0.35);
     cairo_stroke(cr);
   }

@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 
+#include <span>
+
 using cairo_t = struct _cairo;
 
 namespace affinterp::plots {
@@ -23,9 +25,23 @@ struct ProjectedBox {
   void include(const Eigen::Matrix3Xd& vertices);
 };
 
+/// What a drawn triangle is marked as, in the colours of the 3D viewer (plots/viewer/viewer3.html).
+enum class FaceMark : unsigned char {
+  none,
+  fold,                ///< a triangle the target folds within the surface (target_folds3.hpp): purple
+  inverted_near_fold,  ///< inverted in its frame, at or beside such a fold: orange
+  inverted,            ///< inverted in its frame, away from the folds: red
+};
+
+/// The fill of a triangle so marked before shading (unmarked: pale to deep blue as `tint` goes from 0 to 1).
+Eigen::Vector3d face_colour(FaceMark mark, double tint);
+
 /// Draws `triangles` at `vertices` into the cell (x, y, size, size) of the page, scaled so that `box` fits the cell;
-/// `tint` (0 … 1) darkens the fill from pale to deep blue (a frame's time or a blend's position).
+/// `tint` (0 … 1) darkens the fill from pale to deep blue (a frame's time or a blend's position); `marks` (empty, or
+/// one a triangle) paint marked triangles in their colours instead, outlined widely in the same colour, after all
+/// unmarked ones, so that none of those hides a marked one.
 void draw_mesh3(cairo_t* cr, const Eigen::Matrix3Xi& triangles, const Eigen::Matrix3Xd& vertices,
-                const ProjectedBox& box, double x, double y, double size, double tint = 0.5);
+                const ProjectedBox& box, double x, double y, double size, double tint = 0.5,
+                std::span<const FaceMark> marks = {});
 
 }  // namespace affinterp::plots

@@ -213,6 +213,16 @@ void write_engine3_quality(std::ostringstream& md, const std::optional<measureme
     md << " " << most << " |\n";
   }
   md << "\n";
+  if (const auto& c = quality->closeup) {
+    md << "Up close, E^F exp-log's frame with the most inverted triangles away from its target's folds: " << c->pair
+       << " at t = " << fixed(c->t, 2) << ", " << c->inverted << " inverted, " << c->inverted_away
+       << " of them away from the folds; the piece of surface within " << measurements::closeup_rings
+       << " vertex rings of triangle " << c->centre
+       << " in the source, that frame and the target, each turned onto the source's piece (purple: the target's "
+          "folds; orange: inverted at or beside one; red: inverted away from them).\n\n";
+    for (const auto& f : quality->figures)
+      if (f.ends_with(".png")) md << "![inverted triangles up close](" << f << ")\n\n";
+  }
 }
 
 void write_environment(std::ostringstream& md, const json& doc) {

@@ -2,7 +2,8 @@
 // pairs the project has: CGAL's elephant (libcgal-demo) to its bend and to its twist (demo_poses.hpp), and cat-0 to
 // each other cat pose of Sumner and Popović ("Deformation transfer for triangle meshes", SIGGRAPH 2004) when
 // ../shared/data has them. Not a timing: its numbers are the same on every run. Writes one JSON file, which
-// `affinterp claims` reads into the report's 3D section.
+// `affinterp claims` reads into the report's 3D section, with the piece of surface around the worst inversion of
+// exp-log's frames, which it draws there (engine3_closeup.hpp).
 #include "experiments/inputs/shapes3d/demo_poses.hpp"
 #include "experiments/measurements/engine3_quality.hpp"
 
@@ -42,7 +43,7 @@ int main(int argc, char** argv) {
   CLI::App app(
       "The 3D engine's frames against baselines (per-vertex linear blend, the deformation stand-in, E^F with "
       "each local homotopy, exp-log symmetrised): the most elements inverted in a frame and the worst mean "
-      "distortion, per pose pair",
+      "distortion, per pose pair; and exp-log's worst inversion up close",
       "quality_3d");
   std::string out = "reports/bench/quality_3d.json";
   int frames = 21;

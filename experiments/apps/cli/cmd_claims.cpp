@@ -70,12 +70,15 @@ EngineTables engine_tables(const RunContext& context) {
   try {
     std::optional<EngineSpeed> speed = engine_speed(context.bench_dir / "bench_interp.json");
     if (speed) speed->history = engine_speed_history(bench::runs_of(context.bench_dir));
+    std::optional<Engine3Quality> quality3 = read_engine3_quality(context.bench_dir / "quality_3d.json");
+    if (quality3 && quality3->closeup && context.draws_figures())
+      quality3->figures = draw_engine3_closeup(context, *quality3->closeup);
     return {record_json(speed),
             record_json(engine_scale(context.bench_dir / "bench_scale.json", context)),
             record_json(engine_cli(context.bench_dir / "bench_cli_scale.json")),
             record_json(engine3_speed(context.bench_dir / "bench_3d.json")),
             record_json(engine3_scale(context.bench_dir / "bench_3d_scale.json")),
-            record_json(read_engine3_quality(context.bench_dir / "quality_3d.json"))};
+            record_json(quality3)};
   } catch (const std::runtime_error& e) {
     throw CommandFailed(std::string("benchmark outputs: ") + e.what(), 1);
   }
