@@ -3,6 +3,7 @@
 #include "theory/global/parallel_ranges.hpp"
 #include "theory/global3/arap_refinement3.hpp"
 #include "theory/global3/element_maps3.hpp"
+#include "theory/global3/frame_solve3.hpp"
 #include "theory/global3/frame_threads3.hpp"
 #include "theory/global3/local_maps3.hpp"
 #include "theory/global3/mesh3_validation.hpp"
@@ -10,7 +11,6 @@
 #include "theory/global3/rotation_carrier3.hpp"
 #include "theory/local3/local3.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -112,23 +112,12 @@ void Blend3::Engine::maps_at(const Eigen::VectorXd& w, std::span<Matrix3d> out, 
 }
 
 Eigen::Matrix3Xd Blend3::Engine::frame(const Eigen::VectorXd& w, std::size_t threads_, FrameTimings* timings) const {
-  using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
-  std::vector<Matrix3d> A(static_cast<std::size_t>(logs.front().cols()));
-  maps_at(w, A, threads_);
-  const auto mapped = Clock::now();
-  PoissonSystem3::Block b = system.right_hand_side(A, threads_);
-  const auto assembled = Clock::now();
-  const ConstraintTargets3 at_w = targets.at(w);
-  Eigen::Matrix3Xd v = system.solve(std::move(b), at_w, threads_);
-  const auto solved = Clock::now();
-  v = arap_refined(system, A, at_w, std::move(v), options.arap_iterations, threads_);
-  if (timings) {
-    const auto seconds = [](auto from, auto to) { return std::chrono::duration<double>(to - from).count(); };
-    *timings = {seconds(start, mapped), seconds(mapped, assembled), seconds(assembled, solved),
-                seconds(solved, Clock::now())};
-  }
-  return v;
+  const auto maps = [&] {
+    std::vector<Matrix3d> A(static_cast<std::size_t>(logs.front().cols()));
+    maps_at(w, A, threads_);
+    return A;
+  };
+  return solve_frame(system, maps, targets.at(w), options.arap_iterations, threads_, timings);
 }
 
 Blend3::Blend3(const std::vector<Mesh3>& poses, Blend3Options options)

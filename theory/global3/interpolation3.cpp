@@ -4,10 +4,10 @@
 #include "theory/global3/arap_refinement3.hpp"
 #include "theory/global3/element_maps3.hpp"
 #include "theory/global3/element_paths3.hpp"
+#include "theory/global3/frame_solve3.hpp"
 #include "theory/global3/frame_threads3.hpp"
 #include "theory/global3/mesh3_validation.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -66,22 +66,8 @@ struct Interpolation3::Engine {
 };
 
 Eigen::Matrix3Xd Interpolation3::Engine::frame(double t, std::size_t threads_, FrameTimings* timings) const {
-  using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
-  const std::vector<Eigen::Matrix3d> A = term_maps(t, threads_);
-  const auto mapped = Clock::now();
-  PoissonSystem3::Block b = system.right_hand_side(A, threads_);
-  const auto assembled = Clock::now();
-  const ConstraintTargets3 at_t = targets.at(t);
-  Eigen::Matrix3Xd v = system.solve(std::move(b), at_t, threads_);
-  const auto solved = Clock::now();
-  v = arap_refined(system, A, at_t, std::move(v), options.arap_iterations, threads_);
-  if (timings) {
-    const auto seconds = [](auto from, auto to) { return std::chrono::duration<double>(to - from).count(); };
-    *timings = {seconds(start, mapped), seconds(mapped, assembled), seconds(assembled, solved),
-                seconds(solved, Clock::now())};
-  }
-  return v;
+  return solve_frame(
+      system, [&] { return term_maps(t, threads_); }, targets.at(t), options.arap_iterations, threads_, timings);
 }
 
 Interpolation3::Interpolation3(const Mesh3& source, const Mesh3& target, Interpolation3Options options)
