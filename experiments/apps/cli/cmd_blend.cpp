@@ -209,8 +209,8 @@ constexpr const char* blend_description =
     "for tetrahedra) ... or OUT/frames.npy (frames, n, 3), OUT/metrics.json (per frame the weights and quality "
     "metrics, inverted elements among them, and as inverted_near_folds those at or beside the triangles a surface pose "
     "folds within the surface against the first, listed per pose as pose_folds) and OUT/viewer.html (orbit, a slider "
-    "over the "
-    "frames, faces coloured by distortion or inverted elements). On any error OUT keeps its earlier content.";
+    "over the frames, faces coloured by distortion or by the inverted elements metrics.json counts). On any error OUT "
+    "keeps its earlier content.";
 
 void add_blend_inputs(CLI::App& cmd, BlendOptions& o) {
   CLI::Option* poses = cmd.add_option("--poses", o.poses, "The poses (the first is the rest mesh)");
