@@ -76,7 +76,7 @@ constexpr std::string_view exp_log_method = "E^F, exp-log";
 struct Measured {
   Engine3QualityCell cell;
   std::size_t worst = 0;
-  long worst_away = 0;
+  long worst_away = 0, worst_inverted = 0;  ///< that frame's counts
 };
 
 /// The frames' cell, against the reference's local maps at each frame's time (`reference[f]`), with `near` the
@@ -85,14 +85,13 @@ Measured measured(const PosePair& pair, const std::vector<Eigen::Matrix3Xd>& fra
                   const std::vector<std::vector<Eigen::Matrix3d>>& reference, const std::vector<unsigned char>& near) {
   Measured m;
   Engine3QualityCell& cell = m.cell;
-  long worst_inverted = 0;
   for (std::size_t f = 0; f < frames.size(); ++f) {
     const global3::FrameMetrics3 metrics = global3::frame_metrics3(pair.source, frames[f], reference[f], near);
     const long inverted = metrics.inverted_elements, away = inverted - metrics.inverted_near_folds;
     if (inverted > cell.most_inverted) cell.most_inverted = inverted, cell.at_t = times[f];
     cell.most_inverted_away = std::max(cell.most_inverted_away, away);
-    if (std::pair(away, inverted) > std::pair(m.worst_away, worst_inverted))
-      m.worst = f, m.worst_away = away, worst_inverted = inverted;
+    if (std::pair(away, inverted) > std::pair(m.worst_away, m.worst_inverted))
+      m.worst = f, m.worst_away = away, m.worst_inverted = inverted;
     if (f == frames.size() / 2) cell.middle_distortion = metrics.mean_distortion;
   }
   return m;
@@ -126,7 +125,7 @@ Engine3Quality engine3_quality(const std::vector<PosePair>& pairs, int frames,
       const Measured cell = measured(pair, frames_of_method, times, reference, near);
       quality.cells[m].push_back(cell.cell);
       if (all[m].name != exp_log_method || cell.cell.most_inverted == 0) continue;
-      const bool worse = !quality.closeup || std::pair(cell.worst_away, cell.cell.most_inverted) >
+      const bool worse = !quality.closeup || std::pair(cell.worst_away, cell.worst_inverted) >
                                                  std::pair(quality.closeup->inverted_away, quality.closeup->inverted);
       if (worse)
         quality.closeup = closeup_of_frame(pair.name, pair.source, pair.target, times[cell.worst],
