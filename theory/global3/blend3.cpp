@@ -12,6 +12,7 @@
 #include "theory/local3/local3.hpp"
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 namespace affinterp::global3 {
@@ -20,8 +21,10 @@ using Eigen::Index;
 using Eigen::Matrix3d;
 using global::RefusedProblem;
 
-struct Blend3::Engine {
-  Blend3Options options;
+namespace {
+
+/// Per pose, what a frame's pass over the poses reads.
+struct PoseLogs3 {
   std::vector<Eigen::Matrix3Xd> omega;  ///< per pose: ω_{k,i}
   /// Per pose, column i: the carrier ω̄_{k,i} and remainder η_{k,i} of ω_{k,i}, then log S_{k,i}'s upper triangle
   /// (xx, xy, xz, yy, yz, zz; two thirds of the matrix's bytes): one contiguous record per element and pose for the
@@ -29,21 +32,51 @@ struct Blend3::Engine {
   std::vector<Eigen::Matrix<double, 12, Eigen::Dynamic>> logs;
   /// The poses whose records are not all zero: the rest pose itself (A_{k,i} = I) adds nothing to a frame's sums.
   std::vector<std::size_t> moving;
+
+  /// Appends the pose whose element maps are `maps`: its rotations' logarithms on consistent branches (across the
+  /// poses too: each pose's walk starts from the previous pose's logarithms) and its stretches' logarithms.
+  void add(const std::vector<Matrix3d>& maps, const DualGraph3& graph, global::RotationBranch branch);
+};
+
+/// The set-up's two independent halves, built side by side: the poses' logarithms on the caller's thread (and the
+/// decompositions' own), E^F's system (assembly, factorisation) on another. Neither reads what the other writes: the
+/// same as one after the other.
+struct BlendSetUp3 {
+  PoseLogs3 poses;
+  PoissonSystem3 system;
+};
+
+BlendSetUp3 set_up(const Mesh3& rest, const std::vector<Mesh3>& poses, const Blend3Options& o) {
+  PoseLogs3 logs;
+  std::optional<PoissonSystem3> system;
+  global::side_by_side(
+      [&] {
+        const DualGraph3 graph = dual_graph3(rest.elements);
+        for (const Mesh3& pose : poses) logs.add(element_maps(rest, pose), graph, o.rotation_branch);
+      },
+      [&] { system.emplace(rest, o.area_weighted, o.constraints, o.back_end); });
+  return {std::move(logs), std::move(*system)};
+}
+
+}  // namespace
+
+struct Blend3::Engine {
+  Blend3Options options;
+  PoseLogs3 poses;
   PoissonSystem3 system;
   BlendTargets3 targets;  ///< after the system, which refuses bad constraints with its own messages
   std::size_t threads;
 
-  Engine(const Mesh3& rest, const std::vector<Mesh3>& poses, Blend3Options o)
-      : options(std::move(o)),
-        system(rest, options.area_weighted, options.constraints, options.back_end),
-        targets(options.constraints, poses),
+  Engine(const Mesh3& rest, const std::vector<Mesh3>& poses, const Blend3Options& o)
+      : Engine(rest, poses, o, set_up(rest, poses, o)) {}
+  Engine(const Mesh3& rest, const std::vector<Mesh3>& poses_, const Blend3Options& o, BlendSetUp3&& built)
+      : options(o),
+        poses(std::move(built.poses)),
+        system(std::move(built.system)),
+        targets(options.constraints, poses_),
         threads(frame_threads3(options.frame_threads, rest)) {
     require_arap_iterations(options.arap_iterations);
-    const DualGraph3 graph = dual_graph3(rest.elements);
-    for (std::size_t k = 0; k < poses.size(); ++k)
-      decompose(element_maps(rest, poses[k]), graph, k == 0 ? nullptr : &omega.back());
   }
-  void decompose(const std::vector<Matrix3d>& maps, const DualGraph3& graph, const Eigen::Matrix3Xd* previous);
   void maps_at(const Eigen::VectorXd& w, std::span<Matrix3d> out, std::size_t threads_) const;
   Eigen::Matrix3Xd frame(const Eigen::VectorXd& w, std::size_t threads_, FrameTimings* timings) const;
 };
@@ -65,10 +98,8 @@ Blend3Options without_loci(Blend3Options options) {
   return options;
 }
 
-}  // namespace
-
-void Blend3::Engine::decompose(const std::vector<Matrix3d>& maps, const DualGraph3& graph,
-                               const Eigen::Matrix3Xd* previous) {
+void PoseLogs3::add(const std::vector<Matrix3d>& maps, const DualGraph3& graph, global::RotationBranch branch) {
+  const Eigen::Matrix3Xd* previous = omega.empty() ? nullptr : &omega.back();
   const auto m = static_cast<Index>(maps.size());
   Eigen::Matrix3Xd principal(3, m);
   Eigen::Matrix<double, 12, Eigen::Dynamic> record(12, m);
@@ -82,7 +113,7 @@ void Blend3::Engine::decompose(const std::vector<Matrix3d>& maps, const DualGrap
                              record.col(i).tail<6>() << L(0, 0), L(0, 1), L(0, 2), L(1, 1), L(1, 2), L(2, 2);
                            }
                          });
-  const bool consistent = options.rotation_branch == global::RotationBranch::consistent;
+  const bool consistent = branch == global::RotationBranch::consistent;
   ConsistentLogs branched =
       consistent ? consistent_logs(graph, principal, previous) : ConsistentLogs{principal, principal};
   const RotationSplit3 split = consistent ? split_rotations(graph, branched) : unsplit_rotations(branched.omega);
@@ -93,13 +124,15 @@ void Blend3::Engine::decompose(const std::vector<Matrix3d>& maps, const DualGrap
   logs.push_back(std::move(record));
 }
 
+}  // namespace
+
 void Blend3::Engine::maps_at(const Eigen::VectorXd& w, std::span<Matrix3d> out, std::size_t threads_) const {
   exp_log_maps(
       [&](Index first, Index last, std::span<Eigen::Vector3d> Omega, std::span<Eigen::Vector3d> Eta,
           std::span<Matrix3d> Lambda) {
         for (Index i = first; i < last; ++i) {
           Eigen::Matrix<double, 12, 1> x = Eigen::Matrix<double, 12, 1>::Zero();  // summed in registers
-          for (const std::size_t k : moving) x += w[static_cast<Index>(k)] * logs[k].col(i);
+          for (const std::size_t k : poses.moving) x += w[static_cast<Index>(k)] * poses.logs[k].col(i);
           Omega[static_cast<std::size_t>(i - first)] = x.head<3>();
           Eta[static_cast<std::size_t>(i - first)] = x.segment<3>(3);
           const auto Lambda_i = x.tail<6>();
@@ -113,7 +146,7 @@ void Blend3::Engine::maps_at(const Eigen::VectorXd& w, std::span<Matrix3d> out, 
 
 Eigen::Matrix3Xd Blend3::Engine::frame(const Eigen::VectorXd& w, std::size_t threads_, FrameTimings* timings) const {
   const auto maps = [&] {
-    std::vector<Matrix3d> A(static_cast<std::size_t>(logs.front().cols()));
+    std::vector<Matrix3d> A(static_cast<std::size_t>(poses.logs.front().cols()));
     maps_at(w, A, threads_);
     return A;
   };
@@ -160,13 +193,15 @@ std::vector<Eigen::Matrix3Xd> Blend3::vertices_at(const std::vector<Eigen::Vecto
 
 std::vector<Matrix3d> Blend3::local_maps_at(const Eigen::VectorXd& w) const {
   require_valid_weights(w);
-  std::vector<Matrix3d> A(static_cast<std::size_t>(engine_->logs.front().cols()));
+  std::vector<Matrix3d> A(static_cast<std::size_t>(engine_->poses.logs.front().cols()));
   engine_->maps_at(w, A, engine_->threads);
   return A;
 }
 
-Index Blend3::pose_count() const { return static_cast<Index>(engine_->omega.size()); }
-const Eigen::Matrix3Xd& Blend3::rotation_logs(Index k) const { return engine_->omega.at(static_cast<std::size_t>(k)); }
+Index Blend3::pose_count() const { return static_cast<Index>(engine_->poses.omega.size()); }
+const Eigen::Matrix3Xd& Blend3::rotation_logs(Index k) const {
+  return engine_->poses.omega.at(static_cast<std::size_t>(k));
+}
 const PoissonSystem3& Blend3::system() const { return engine_->system; }
 const Blend3Options& Blend3::options() const { return engine_->options; }
 

@@ -31,6 +31,23 @@ std::vector<const Mesh3*> rest_poses(const Mesh3& source, const Mesh3& target, b
   return {&source};
 }
 
+/// The set-up's two independent halves: each element's path (decompositions, rotation branches, carrier) and E^F's
+/// system (assembly, factorisation), built side by side, the paths on the caller's thread (and the decompositions'
+/// own), the factorisation on another. Neither reads what the other writes: the same as one after the other.
+struct SetUp3 {
+  ElementPaths3 paths;
+  PoissonSystem3 system;
+};
+
+SetUp3 set_up(const Mesh3& s, const Mesh3& t, const Interpolation3Options& o) {
+  std::optional<ElementPaths3> paths;
+  std::optional<PoissonSystem3> system;
+  global::side_by_side(
+      [&] { paths.emplace(element_maps(s, t), o.homotopy, o.rotation_branch, dual_graph3(s.elements)); },
+      [&] { system.emplace(rest_poses(s, t, o.symmetric), o.area_weighted, o.constraints, o.back_end); });
+  return {std::move(*paths), std::move(*system)};
+}
+
 }  // namespace
 
 struct Interpolation3::Engine {
@@ -41,10 +58,11 @@ struct Interpolation3::Engine {
   InterpolationTargets3 targets;  ///< after the system, which refuses bad constraints with its own messages
   std::size_t threads;
 
-  Engine(const Mesh3& s, const Mesh3& t, Interpolation3Options o)
-      : options(std::move(o)),
-        paths(element_maps(s, t), options.homotopy, options.rotation_branch, dual_graph3(s.elements)),
-        system(rest_poses(s, t, options.symmetric), options.area_weighted, options.constraints, options.back_end),
+  Engine(const Mesh3& s, const Mesh3& t, const Interpolation3Options& o) : Engine(s, t, o, set_up(s, t, o)) {}
+  Engine(const Mesh3& s, const Mesh3& t, const Interpolation3Options& o, SetUp3&& built)
+      : options(o),
+        paths(std::move(built.paths)),
+        system(std::move(built.system)),
         targets(options.constraints, s.vertices, t.vertices),
         threads(frame_threads3(options.frame_threads, s)) {
     require_arap_iterations(options.arap_iterations);
@@ -71,7 +89,7 @@ Eigen::Matrix3Xd Interpolation3::Engine::frame(double t, std::size_t threads_, F
 }
 
 Interpolation3::Interpolation3(const Mesh3& source, const Mesh3& target, Interpolation3Options options)
-    : engine_(std::make_unique<Engine>(validated(source, target), target, std::move(options))) {}
+    : engine_(std::make_unique<Engine>(validated(source, target), target, options)) {}
 Interpolation3::~Interpolation3() = default;
 Interpolation3::Interpolation3(Interpolation3&&) noexcept = default;
 Interpolation3& Interpolation3::operator=(Interpolation3&&) noexcept = default;
