@@ -3,8 +3,8 @@
 // vertices v(t) minimising Σ_i w_i ‖B_i(t) − A_i(t)‖²_F + C(v) (poisson_system3.hpp), A_i(t) the local homotopy
 // of element i (theory/local3; element_paths3.hpp) between I and A_i (element_maps3.hpp: tetrahedra's affine maps,
 // triangles' Sumner–Popović frames), w_i the source element's area or volume. The set-up (constructor) validates,
-// decomposes each A_i, chooses the rotation branches and factors E^F's matrix once; a frame is the local maps,
-// a right-hand side and a solve.
+// decomposes each A_i and chooses the rotation branches while another thread factors E^F's matrix, once; a frame
+// is the local maps, a right-hand side and a solve.
 //
 // What does not carry over from the 2D engine (theory/global/interpolation.hpp): E^R, E^S and so their blend.
 // E^R's closed form (Kaji Appendix) minimises over similarities s R_δ by writing 2D similarities as complex
