@@ -43,11 +43,10 @@ TEST(Engine3Closeup, CentresOnAnInvertedTriangleAndMarksTheInvertedOnes) {
   EXPECT_LT(closeup->triangles.cols(), d.tube.element_count() / 2);
   const auto n = static_cast<std::size_t>(closeup->triangles.cols());
   ASSERT_EQ(closeup->frame_marks.size(), n);
-  ASSERT_EQ(closeup->source_marks.size(), n);
+  ASSERT_EQ(closeup->fold_marks.size(), n);
   EXPECT_EQ(static_cast<long>(std::count(closeup->frame_marks.begin(), closeup->frame_marks.end(), FaceMark::inverted)),
             closeup->inverted);  // the dragged vertex's triangles all lie within the piece
-  EXPECT_EQ(std::count(closeup->source_marks.begin(), closeup->source_marks.end(), FaceMark::none),
-            static_cast<long>(n));
+  EXPECT_EQ(std::count(closeup->fold_marks.begin(), closeup->fold_marks.end(), FaceMark::none), static_cast<long>(n));
   // each panel's vertices are the same mesh vertices: the frame moved one of them, the target twisted all
   const Eigen::Index moved = ((closeup->frame - closeup->source).colwise().norm().array() > 0).count();
   EXPECT_EQ(moved, 1);

@@ -111,7 +111,7 @@ std::optional<Engine3Closeup> closeup_of_frame(const std::string& pair, const gl
   for (const Index i : piece) {
     const auto at = static_cast<std::size_t>(i);
     const FaceMark in_input = fold[at] ? FaceMark::fold : FaceMark::none;
-    closeup.source_marks.push_back(in_input), closeup.target_marks.push_back(in_input);
+    closeup.fold_marks.push_back(in_input);
     closeup.frame_marks.push_back(!inverted[at] ? in_input
                                   : near[at]    ? FaceMark::inverted_near_fold
                                                 : FaceMark::inverted);
@@ -122,9 +122,9 @@ std::optional<Engine3Closeup> closeup_of_frame(const std::string& pair, const gl
 std::vector<std::string> draw_engine3_closeup(const claims::RunSettings& settings, const Engine3Closeup& closeup) {
   std::ostringstream frame_label;
   frame_label << "frame at t = " << std::setprecision(3) << closeup.t;
-  const std::vector<plots::MarkedPatch> patches{{closeup.source, closeup.source_marks, "source"},
+  const std::vector<plots::MarkedPatch> patches{{closeup.source, closeup.fold_marks, "source"},
                                                 {closeup.frame, closeup.frame_marks, frame_label.str()},
-                                                {closeup.target, closeup.target_marks, "target"}};
+                                                {closeup.target, closeup.fold_marks, "target"}};
   return claims::RunSettings::figure_refs(
       plots::draw_patches3(settings.figure_stem("sequel-3d-inversion-closeup"), closeup.triangles, patches,
                            {{FaceMark::fold, "a fold of the target"},
@@ -144,9 +144,8 @@ void to_json(nlohmann::json& json, const Engine3Closeup& closeup) {
           {"source", columns_of(closeup.source)},
           {"frame", columns_of(closeup.frame)},
           {"target", columns_of(closeup.target)},
-          {"source_marks", numbers_of(closeup.source_marks)},
-          {"frame_marks", numbers_of(closeup.frame_marks)},
-          {"target_marks", numbers_of(closeup.target_marks)}};
+          {"fold_marks", numbers_of(closeup.fold_marks)},
+          {"frame_marks", numbers_of(closeup.frame_marks)}};
 }
 
 void from_json(const nlohmann::json& json, Engine3Closeup& closeup) {
@@ -156,9 +155,8 @@ void from_json(const nlohmann::json& json, Engine3Closeup& closeup) {
   closeup.triangles = matrix_of(json.at("triangles"), 3).cast<int>();
   closeup.source = matrix_of(json.at("source"), 3), closeup.frame = matrix_of(json.at("frame"), 3);
   closeup.target = matrix_of(json.at("target"), 3);
-  closeup.source_marks = marks_of(json.at("source_marks"));
+  closeup.fold_marks = marks_of(json.at("fold_marks"));
   closeup.frame_marks = marks_of(json.at("frame_marks"));
-  closeup.target_marks = marks_of(json.at("target_marks"));
 }
 
 }  // namespace affinterp::measurements

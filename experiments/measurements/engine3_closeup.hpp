@@ -27,10 +27,11 @@ struct Engine3Closeup {
   long inverted_away = 0;      ///< of those, the ones neither a fold of the target nor sharing a vertex with one
   long centre = 0;             ///< the triangle the piece is centred on, in the pair's numbering
   Eigen::Matrix3Xi triangles;  ///< the piece's triangles, indices into the columns of the vertices below
-  Eigen::Matrix3Xd source, frame, target;  ///< the piece's vertices in each
-  /// Per triangle of the piece: in the source and the target, the target's folds; in the frame, the inverted
-  /// triangles (at or beside a fold, or away) and the folds that are not inverted.
-  std::vector<plots::FaceMark> source_marks, frame_marks, target_marks;
+  Eigen::Matrix3Xd source, frame, target;   ///< the piece's vertices in each
+  std::vector<plots::FaceMark> fold_marks;  ///< per triangle of the piece: the target's folds (source and target)
+  /// Per triangle of the piece in the frame: the inverted ones (at or beside a fold, or away), and the folds that
+  /// are not inverted.
+  std::vector<plots::FaceMark> frame_marks;
 };
 
 /// The piece of `source`'s surface within `rings` vertex rings of one triangle that `frame` (at time t, judged
@@ -44,8 +45,8 @@ std::optional<Engine3Closeup> closeup_of_frame(const std::string& pair, const gl
 /// sequel-3d-inversion-closeup.png and .svg under the settings' figure folder; returns their references.
 std::vector<std::string> draw_engine3_closeup(const claims::RunSettings& settings, const Engine3Closeup& closeup);
 
-/// {"pair", "t", "inverted", "inverted_away", "centre", "triangles", "source", "frame", "target", "source_marks",
-/// "frame_marks", "target_marks"}; matrices as arrays of their columns, marks as small integers (FaceMark).
+/// {"pair", "t", "inverted", "inverted_away", "centre", "triangles", "source", "frame", "target", "fold_marks",
+/// "frame_marks"}; matrices as arrays of their columns, marks as small integers (FaceMark).
 void to_json(nlohmann::json& json, const Engine3Closeup& closeup);
 void from_json(const nlohmann::json& json, Engine3Closeup& closeup);
 
