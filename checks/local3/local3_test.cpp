@@ -166,6 +166,30 @@ TEST(NearestRotation, OfRankTwoIsTheSvdsAnswer) {
   EXPECT_EQ(nearest_rotation_of_rank_two<double>(rank_one), nearest_rotation<double>(rank_one));
 }
 
+// Kabsch: points turned by a rotation and moved give back that rotation, whatever the move; with noise, no other
+// rotation fits them better.
+TEST(NearestRotation, FittedRotationRecoversATurnAndMovedPoints) {
+  std::mt19937 rng(13);
+  std::normal_distribution<double> g;
+  std::uniform_real_distribution<double> angle(0, pi);
+  for (int trial = 0; trial < 50; ++trial) {
+    Eigen::Matrix3Xd p(3, 7);
+    for (Eigen::Index k = 0; k < p.size(); ++k) p(k) = g(rng);
+    const M R = rotation_exp<double>(angle(rng) * random_unit(rng));
+    const Eigen::Matrix3Xd q = (R * p).colwise() + V(g(rng), g(rng), g(rng));
+    EXPECT_LT((fitted_rotation<double>(p, q) - R).norm(), 1e-12) << "trial " << trial;
+    Eigen::Matrix3Xd noisy = q;
+    for (Eigen::Index k = 0; k < noisy.size(); ++k) noisy(k) += 0.1 * g(rng);
+    const M F = fitted_rotation<double>(p, noisy);
+    const auto misfit = [&](const M& Q) {
+      const Eigen::Matrix3Xd r = (noisy.colwise() - noisy.rowwise().mean()) - Q * (p.colwise() - p.rowwise().mean());
+      return r.squaredNorm();
+    };
+    for (int other = 0; other < 20; ++other)
+      EXPECT_LE(misfit(F), misfit(rotation_exp<double>(0.3 * angle(rng) * random_unit(rng)) * F) + 1e-12);
+  }
+}
+
 /// The four homotopies of A built from its principal logarithms, and from ω shifted by `turns` turns.
 template <class Check>
 void for_each_homotopy(const M& A, int turns, Check check) {

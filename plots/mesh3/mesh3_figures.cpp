@@ -63,11 +63,9 @@ std::vector<std::string> draw_blend_triangle3(const std::filesystem::path& stem,
 namespace {
 
 /// The patch's vertices centred on their mean and turned by the rotation that best maps them onto `onto`'s
-/// (centred likewise; Kabsch: the rotation nearest the cross-covariance).
+/// (local3::fitted_rotation).
 Eigen::Matrix3Xd turned_onto(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3Xd& onto) {
-  const Eigen::Matrix3Xd p = vertices.colwise() - vertices.rowwise().mean();
-  const Eigen::Matrix3Xd q = onto.colwise() - onto.rowwise().mean();
-  return local3::nearest_rotation<double>(q * p.transpose()) * p;
+  return local3::fitted_rotation<double>(vertices, onto) * (vertices.colwise() - vertices.rowwise().mean());
 }
 
 /// The rotation that takes the area-weighted normal of `triangles` at `vertices` to the viewer's direction (after

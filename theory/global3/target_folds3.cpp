@@ -11,17 +11,6 @@ using Eigen::Index;
 
 namespace {
 
-/// The rotation R minimising Σ_k ‖(q_k − q̄) − R (p_k − p̄)‖² over the vertices `ring` (Kabsch): the rotation nearest
-/// to the cross-covariance Σ_k (q_k − q̄)(p_k − p̄)ᵀ.
-Eigen::Matrix3d fitted_rotation(const Eigen::Matrix3Xd& p, const Eigen::Matrix3Xd& q, const std::vector<Index>& ring) {
-  Eigen::Vector3d p_mean = Eigen::Vector3d::Zero(), q_mean = Eigen::Vector3d::Zero();
-  for (const Index k : ring) p_mean += p.col(k), q_mean += q.col(k);
-  p_mean /= static_cast<double>(ring.size()), q_mean /= static_cast<double>(ring.size());
-  Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
-  for (const Index k : ring) H += (q.col(k) - q_mean) * (p.col(k) - p_mean).transpose();
-  return local3::nearest_rotation(H);
-}
-
 Eigen::Vector3d normal(const Eigen::Matrix3Xd& v, const Mesh3& mesh, Index i) {
   const Eigen::Vector3d a = v.col(mesh.elements(0, i));
   return (v.col(mesh.elements(1, i)) - a).cross(v.col(mesh.elements(2, i)) - a);
@@ -43,7 +32,8 @@ std::vector<Index> target_folds(const Mesh3& source, const Mesh3& target) {
     }
     std::ranges::sort(ring);
     ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
-    const Eigen::Matrix3d R = fitted_rotation(source.vertices, target.vertices, ring);
+    const Eigen::Matrix3d R =
+        local3::fitted_rotation<double>(source.vertices(Eigen::all, ring), target.vertices(Eigen::all, ring));
     if (normal(target.vertices, source, i).dot(R * normal(source.vertices, source, i)) <= 0) folds.push_back(i);
   }
   return folds;

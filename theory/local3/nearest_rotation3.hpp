@@ -19,6 +19,20 @@ Mat3<Scalar> nearest_rotation(const Mat3<Scalar>& M) {
   return U * svd.matrixV().transpose();
 }
 
+/// The rotation R minimising Σ_k ‖(q_k − q̄) − R (p_k − p̄)‖² over the columns k of p and q (3 × k each; Kabsch
+/// 1976): the rotation nearest to the centred cross-covariance Σ_k (q_k − q̄)(p_k − p̄)ᵀ, summed column by column in
+/// order, so the same bits whatever the vector width.
+template <class Scalar>
+Mat3<Scalar> fitted_rotation(const Eigen::Matrix<Scalar, 3, Eigen::Dynamic>& p,
+                             const Eigen::Matrix<Scalar, 3, Eigen::Dynamic>& q) {
+  Vec3<Scalar> p_mean = Vec3<Scalar>::Zero(), q_mean = Vec3<Scalar>::Zero();
+  for (Eigen::Index k = 0; k < p.cols(); ++k) p_mean += p.col(k), q_mean += q.col(k);
+  p_mean /= Scalar(p.cols()), q_mean /= Scalar(p.cols());
+  Mat3<Scalar> H = Mat3<Scalar>::Zero();
+  for (Eigen::Index k = 0; k < p.cols(); ++k) H += (q.col(k) - q_mean) * (p.col(k) - p_mean).transpose();
+  return nearest_rotation(H);
+}
+
 namespace detail {
 
 /// The largest of the three cross products of a, b, c taken in pairs: the normal of the plane they span, as
